@@ -1,0 +1,267 @@
+/**
+ * @file explicit_solver.h
+ * One-point hexahedra with Flanagan-Belytschko stiffness hourglass control,
+ * total-Lagrangian St. Venant-Kirchhoff material, element stiffness damping,
+ * lumped mass condensed over hanging nodes and central-difference time
+ * integration (SPEC 2).
+ */
+#ifndef wheelrail_explicit_solver_h
+#define wheelrail_explicit_solver_h
+
+#include <deal.II/base/aligned_vector.h>
+#include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/partitioner.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <wheelrail/parameters.h>
+
+#include <functional>
+#include <memory>
+
+namespace WheelRail
+{
+  using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+  /** Energies of the whole model at one instant [J]. */
+  struct Energies
+  {
+    double        time = 0; ///< t_n, the instant of these values [s]
+    unsigned long step = 0; ///< n
+    double kinetic   = 0; ///< with the mid-step velocity v_n
+    double internal  = 0; ///< St. Venant-Kirchhoff strain energy
+    double hourglass = 0; ///< energy stored in the hourglass springs
+    /** Hourglass-mode energy with the reference coefficient QM = 0.1,
+     *  also when the control is off: shows spurious modes. */
+    double hourglass_reference = 0;
+    double damping             = 0; ///< dissipated by damping, accumulated
+    double external_work       = 0; ///< gravity and prescribed boundaries
+
+    /** KE + IE + HG + D - W_ext. */
+    double
+    total() const
+    {
+      return kinetic + internal + hourglass + damping - external_work;
+    }
+  };
+
+  /** Mesh size and quality figures over all cells (all ranks). */
+  struct MeshQuality
+  {
+    double min_edge             = 0; ///< shortest edge [m]
+    double min_longest_edge     = 0; ///< h_min: smallest cell size [m]
+    double min_length           = 0; ///< smallest L_e = V/A_max [m]
+    double min_scaled_jacobian  = 0; ///< at the corners, 1 for a cube [-]
+    double max_aspect_ratio     = 0; ///< longest / shortest edge [-]
+  };
+
+  /** Per-cell stress measures computed from the current displacement. */
+  struct CellStress
+  {
+    Tensor<2, dim> second_piola_kirchhoff;
+    double         von_mises; ///< of the Cauchy stress
+  };
+
+  /**
+   * The explicit elastodynamics core. It owns the DoFHandler, the hanging
+   * node constraints, the lumped mass, and the state vectors u (at t_n) and
+   * v (at t_{n-1/2}), and advances them by step().
+   */
+  class ExplicitSolver
+  {
+  public:
+    /** Lanes of a cell batch; the kernel vectorises across them. */
+    static constexpr unsigned int n_lanes = 8;
+
+    ExplicitSolver(const Parameters &                         parameters,
+                   parallel::distributed::Triangulation<dim> &triangulation);
+
+    /** Distribute DoFs, build constraints, element data, mass and loads. */
+    void
+    setup();
+
+    /** Stable step C min_e(L_e/c) with the damping reduction [s]. */
+    double
+    stable_time_step() const
+    {
+      return stable_dt;
+    }
+    /** Sizes and quality of the mesh. */
+    const MeshQuality &
+    mesh_quality() const
+    {
+      return quality;
+    }
+    void
+    set_time_step(const double dt);
+    double
+    time_step() const
+    {
+      return dt;
+    }
+
+    /** Set u everywhere (on cells of @p material, or all if invalid id). */
+    void
+    set_displacement(const std::function<Tensor<1, dim>(const Point<dim> &)> &u_of_X,
+                     const types::material_id material = numbers::invalid_material_id);
+    /** Set the initial velocity v_0 (the first step is a half step). */
+    void
+    set_velocity(const std::function<Tensor<1, dim>(const Point<dim> &,
+                                                    const types::material_id)> &v_of_X);
+
+    /** One central-difference step; energies at t_n if @p energies. */
+    void
+    step(Energies *energies = nullptr);
+
+    /** Internal force f_int(u) without damping, condensed and compressed. */
+    void
+    compute_internal_force(VectorType &force) const;
+
+    /** Stress of every locally owned cell (in active cell index order). */
+    std::vector<CellStress>
+    cell_stresses() const;
+
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const VectorType &
+    displacement() const
+    {
+      return u;
+    }
+    const VectorType &
+    velocity() const
+    {
+      return v;
+    }
+    double
+    time() const
+    {
+      return t;
+    }
+    unsigned long
+    step_number() const
+    {
+      return n_steps;
+    }
+    /** Sum of the condensed lumped mass [kg] of cells of @p material. */
+    double
+    total_mass(const types::material_id material = numbers::invalid_material_id) const;
+    /** Sum of the reference cell volumes of @p material [m^3]. */
+    double
+    mesh_volume(const types::material_id material = numbers::invalid_material_id) const;
+    /** Number of locally owned cells (all ranks: use MPI sum). */
+    unsigned int
+    n_local_cells() const
+    {
+      return n_cells;
+    }
+    /** Reference position of the support point of local DoF index i. */
+    const std::vector<Point<dim>> &
+    support_points() const
+    {
+      return node_points;
+    }
+    /** DoFs on the boundary (local indices of locally relevant DoFs). */
+    const std::vector<bool> &
+    boundary_dof_mask() const
+    {
+      return on_boundary;
+    }
+    /** Mean displacement of the wheel bore nodes (zero if none). */
+    Tensor<1, dim>
+    bore_displacement() const;
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &
+    partitioner() const
+    {
+      return vector_partitioner;
+    }
+
+  private:
+    /** Move hanging vertices to the mean of their masters (see .cc). */
+    void
+    make_hanging_vertices_conforming();
+    void
+    setup_cell_data();
+    void
+    setup_mass_and_loads();
+    void
+    setup_prescribed_dofs();
+    /** f = f_int(u) + f_damp(v); returns the damping power. */
+    double
+    assemble_forces(const VectorType &u, const VectorType *v, VectorType &f) const;
+    /** Add hanging-node entries of @p f to their masters and zero them. */
+    void
+    condense(VectorType &f) const;
+    /** Set hanging-node entries of @p x from their masters. */
+    void
+    distribute(VectorType &x) const;
+    /** Internal and hourglass energy at the current u. */
+    void
+    strain_energies(Energies &e) const;
+
+    const Parameters &                         prm;
+    parallel::distributed::Triangulation<dim> &triangulation;
+    MPI_Comm                                   mpi_communicator;
+    FESystem<dim>                              fe;
+    DoFHandler<dim>                            dof_handler;
+    AffineConstraints<double>                  hanging_constraints;
+    std::shared_ptr<const Utilities::MPI::Partitioner> vector_partitioner;
+
+    /** Hanging-node constraints in local indices: (dof, [(master, w)]). */
+    std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
+      constraint_lines;
+
+    // Element data, batches of n_lanes cells, structure of arrays.
+    unsigned int                   n_cells   = 0;
+    unsigned int                   n_batches = 0;
+    AlignedVector<double>          batch_data;  ///< [batch][field][lane]
+    std::vector<unsigned int>      batch_nodes; ///< [batch][vertex][lane]
+    std::vector<unsigned int>      batch_cell_index; ///< active cell index
+    std::vector<types::material_id> batch_material;
+
+    // Nodal data (local indices of the ghosted vectors).
+    std::vector<Point<dim>> node_points; ///< reference position of each DoF
+    std::vector<bool>       on_boundary;
+    std::vector<types::material_id> node_material;
+    std::vector<unsigned char>      node_component; ///< 0, 1, 2 = x, y, z
+    std::vector<unsigned int> bore_dofs;
+    VectorType              mass;     ///< condensed lumped mass, per DoF
+    VectorType              inv_mass; ///< 0 on constrained DoFs
+    VectorType              f_ext;    ///< gravity, condensed
+    VectorType              u0;       ///< displacement at the start
+
+    /** Prescribed DoFs (owned): index and function of (X, t) -> u_d. */
+    struct PrescribedDof
+    {
+      unsigned int index;
+      unsigned int component;
+      unsigned int kind; ///< 0 fixed, 1 velocity function, 2 spinning axle
+      double       u_prev = 0; ///< u at the start of the step
+      double       v_prev = 0; ///< v at the previous half step
+    };
+    std::vector<PrescribedDof>            prescribed;
+    std::unique_ptr<Function<dim>>        prescribed_velocity;
+
+    VectorType u, v, f, v_old;
+    double     t          = 0;
+    double     dt         = 0;
+    double     stable_dt  = 0;
+    MeshQuality quality;
+    unsigned long n_steps = 0;
+    double     damping_dissipation = 0;
+    double     boundary_work       = 0;
+  };
+} // namespace WheelRail
+
+#endif

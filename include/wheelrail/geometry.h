@@ -1,0 +1,69 @@
+/**
+ * @file geometry.h
+ * Meshes of the wheel and the rail head (SPEC 1) and of the verification
+ * bar, with their boundary and material ids, manifolds and local refinement.
+ */
+#ifndef wheelrail_geometry_h
+#define wheelrail_geometry_h
+
+#include <deal.II/distributed/tria.h>
+
+#include <wheelrail/parameters.h>
+
+namespace WheelRail
+{
+  namespace Geometry
+  {
+    /**
+     * Boundary ids. The README lists them too; keep both in step.
+     */
+    namespace BoundaryIds
+    {
+      constexpr types::boundary_id wheel_tread = 1;
+      constexpr types::boundary_id wheel_bore  = 2;
+      constexpr types::boundary_id wheel_side  = 3;
+      constexpr types::boundary_id rail_top    = 10;
+      constexpr types::boundary_id rail_bottom = 11;
+      constexpr types::boundary_id rail_end    = 12;
+      constexpr types::boundary_id rail_side   = 13;
+      constexpr types::boundary_id bar_side    = 20;
+      constexpr types::boundary_id bar_start   = 21; ///< x = 0
+      constexpr types::boundary_id bar_end     = 22; ///< x = L
+    } // namespace BoundaryIds
+
+    /** Material ids: which body a cell belongs to. */
+    namespace MaterialIds
+    {
+      constexpr types::material_id wheel = 1;
+      constexpr types::material_id rail  = 2;
+      constexpr types::material_id bar   = 3;
+    } // namespace MaterialIds
+
+    /** Manifold ids. */
+    namespace ManifoldIds
+    {
+      constexpr types::manifold_id wheel = 1; ///< cylinder about the axle
+      constexpr types::manifold_id rail  = 2; ///< box mapped to the arc top
+    } // namespace ManifoldIds
+
+    /**
+     * Build the coarse mesh of @p geometry_type ("wheel and rail" or "bar"),
+     * attach manifolds and refine locally as GeometryParameters says.
+     */
+    void
+    build(const GeometryParameters &                 parameters,
+          const std::string &                        geometry_type,
+          parallel::distributed::Triangulation<dim> &triangulation);
+
+    /** Undeformed wheel centre. */
+    Point<dim>
+    wheel_centre(const GeometryParameters &parameters);
+
+    /** Exact volume of the body with material id @p material (analytic). */
+    double
+    exact_volume(const GeometryParameters &parameters,
+                 const types::material_id  material);
+  } // namespace Geometry
+} // namespace WheelRail
+
+#endif

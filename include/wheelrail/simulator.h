@@ -1,0 +1,96 @@
+/**
+ * @file simulator.h
+ * The run of one parameter file: mesh, solver, initial and boundary
+ * conditions, time loop, reports, output files and verification checks.
+ */
+#ifndef wheelrail_simulator_h
+#define wheelrail_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/table_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <wheelrail/explicit_solver.h>
+#include <wheelrail/parameters.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace WheelRail
+{
+  /**
+   * Runs one case. run() follows SPEC 5 as far as the explicit core goes:
+   * build mesh and solver, print the setup summary, then either a static
+   * verification (patch test, rigid rotation) or the explicit run.
+   */
+  class Simulator
+  {
+  public:
+    Simulator(const Parameters &parameters, const ParameterHandler &prm, MPI_Comm comm);
+
+    void
+    run();
+
+  private:
+    void
+    prepare_output_directory(const ParameterHandler &prm) const;
+    void
+    print_setup_summary();
+    void
+    run_static_check();
+    void
+    run_explicit();
+    void
+    apply_initial_conditions();
+    void
+    setup_probe();
+    void
+    record_probe();
+    void
+    report(const Energies &e, const double wall_seconds);
+    void
+    add_statistics_row(const Energies &e);
+    void
+    write_statistics() const;
+    void
+    write_probe() const;
+    void
+    write_vtu();
+    void
+    final_checks();
+
+    /** Write @p content to @p name in the output directory atomically
+     *  (temporary file, then rename), from rank 0. */
+    void
+    write_file(const std::string &name, const std::string &content) const;
+
+    const Parameters &                        parameters;
+    MPI_Comm                                  mpi_communicator;
+    ConditionalOStream                        pcout;
+    parallel::distributed::Triangulation<dim> triangulation;
+    std::unique_ptr<ExplicitSolver>           solver;
+    std::string                               output_directory;
+
+    TableHandler statistics;
+    std::vector<std::pair<double, std::string>> vtu_records;
+    unsigned int                                vtu_counter = 0;
+
+    // probe: owner rank and local DoF index of the x-component
+    unsigned int        probe_owner = 0;
+    unsigned int        probe_dof   = 0;
+    Point<dim>          probe_location;
+    std::vector<double> probe_history; ///< t, u_x,u_y,u_z, v_x,v_y,v_z per step
+
+    Energies     initial_energies;
+    bool         have_initial_energies = false;
+    double       max_balance_error     = 0;
+    double       hourglass_time_integral = 0;
+    double       hourglass_ref_time_integral = 0;
+    double       internal_time_integral = 0;
+    double       max_hourglass_ratio_actual = 0;
+  };
+} // namespace WheelRail
+
+#endif

@@ -1,0 +1,965 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <wheelrail/explicit_solver.h>
+#include <wheelrail/geometry.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace WheelRail
+{
+  namespace
+  {
+    constexpr unsigned int W = ExplicitSolver::n_lanes;
+
+    /** Fields of the per-cell element data, each stored for W lanes. */
+    namespace Field
+    {
+      constexpr unsigned int b         = 0;  ///< 24: B_a / V0, [a*3+j]
+      constexpr unsigned int c         = 24; ///< 12: h_alpha . X_j, [alpha*3+j]
+      constexpr unsigned int volume    = 36; ///< V0
+      constexpr unsigned int kappa     = 37; ///< hourglass stiffness
+      constexpr unsigned int kappa_ref = 38; ///< with QM = 0.1
+      constexpr unsigned int beta      = 39; ///< damping time constant [s]
+      constexpr unsigned int lambda    = 40;
+      constexpr unsigned int mu        = 41;
+      constexpr unsigned int n_fields  = 42;
+    } // namespace Field
+
+    /** Reference hourglass coefficient of the hourglass-mode indicator. */
+    constexpr double reference_hourglass_coefficient = 0.1;
+
+    /**
+     * Flanagan-Belytschko hourglass base vectors for the lexicographic
+     * vertex numbering of deal.II: eta zeta, xi zeta, xi eta, xi eta zeta.
+     */
+    constexpr double hg[4][8] = {{1, 1, -1, -1, -1, -1, 1, 1},
+                                 {1, -1, 1, -1, -1, 1, -1, 1},
+                                 {1, -1, -1, 1, 1, -1, -1, 1},
+                                 {-1, 1, 1, -1, 1, -1, -1, 1}};
+
+    /**
+     * Element forces of one batch of W cells: one-point total-Lagrangian
+     * St. Venant-Kirchhoff stress, element stiffness damping and FB
+     * stiffness hourglass forces. u, v, f are [vertex][component][lane].
+     * The loop over lanes is the vectorised one. Returns the damping power.
+     */
+    template <bool with_damping>
+    double
+    batch_forces(const double *__restrict data,
+                 const double *__restrict ub,
+                 const double *__restrict vb,
+                 double *__restrict fb)
+    {
+      double power = 0;
+#pragma omp simd reduction(+ : power)
+      for (unsigned int l = 0; l < W; ++l)
+        {
+          const double V0 = data[Field::volume * W + l];
+          const double la = data[Field::lambda * W + l];
+          const double mu = data[Field::mu * W + l];
+          const double ka = data[Field::kappa * W + l];
+
+          // displacement gradient H = sum_a u_a (x) b_a
+          double H[3][3] = {};
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                H[i][j] += ub[(a * 3 + i) * W + l] * data[(Field::b + a * 3 + j) * W + l];
+
+          // Green-Lagrange strain E = (H + H^T + H^T H)/2
+          double E[3][3];
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                double hth = 0;
+                for (unsigned int k = 0; k < 3; ++k)
+                  hth += H[k][i] * H[k][j];
+                E[i][j] = 0.5 * (H[i][j] + H[j][i] + hth);
+              }
+          const double trE = E[0][0] + E[1][1] + E[2][2];
+          double       S[3][3];
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              S[i][j] = 2. * mu * E[i][j] + (i == j ? la * trE : 0.);
+
+          if constexpr (with_damping)
+            {
+              // Edot = (F^T L + L^T F)/2, L = sum_a v_a (x) b_a
+              const double beta = data[Field::beta * W + l];
+              double       L[3][3] = {};
+              for (unsigned int a = 0; a < 8; ++a)
+                for (unsigned int i = 0; i < 3; ++i)
+                  for (unsigned int j = 0; j < 3; ++j)
+                    L[i][j] += vb[(a * 3 + i) * W + l] *
+                               data[(Field::b + a * 3 + j) * W + l];
+              double Ed[3][3];
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  {
+                    double ftl = 0;
+                    for (unsigned int k = 0; k < 3; ++k)
+                      ftl += (H[k][i] + (k == i)) * L[k][j] +
+                             L[k][i] * (H[k][j] + (k == j));
+                    Ed[i][j] = 0.5 * ftl;
+                  }
+              const double trEd = Ed[0][0] + Ed[1][1] + Ed[2][2];
+              double       p    = la * trEd * trEd;
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  {
+                    const double sd = beta * (2. * mu * Ed[i][j] + (i == j ? la * trEd : 0.));
+                    S[i][j] += sd;
+                    p += 2. * mu * Ed[i][j] * Ed[i][j];
+                  }
+              power += beta * V0 * p;
+            }
+
+          // hourglass generalised displacements g_alpha = gamma_alpha . u
+          double g[4][3];
+          for (unsigned int al = 0; al < 4; ++al)
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                double s = 0;
+                for (unsigned int a = 0; a < 8; ++a)
+                  s += hg[al][a] * ub[(a * 3 + i) * W + l];
+                for (unsigned int j = 0; j < 3; ++j)
+                  s -= data[(Field::c + al * 3 + j) * W + l] * H[i][j];
+                g[al][i] = ka * s; // hourglass generalised force
+              }
+
+          // T = V0 F S - sum_alpha Q_alpha (x) c_alpha
+          double T[3][3];
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                double fs = S[i][j];
+                for (unsigned int k = 0; k < 3; ++k)
+                  fs += H[i][k] * S[k][j];
+                double q = 0;
+                for (unsigned int al = 0; al < 4; ++al)
+                  q += g[al][i] * data[(Field::c + al * 3 + j) * W + l];
+                T[i][j] = V0 * fs - q;
+              }
+
+          // f_a = T b_a + sum_alpha h_alpha,a Q_alpha
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                double s = 0;
+                for (unsigned int j = 0; j < 3; ++j)
+                  s += T[i][j] * data[(Field::b + a * 3 + j) * W + l];
+                for (unsigned int al = 0; al < 4; ++al)
+                  s += hg[al][a] * g[al][i];
+                fb[(a * 3 + i) * W + l] = s;
+              }
+        }
+      return power;
+    }
+
+
+
+    /** Rotation about +y by angle @p theta applied to @p r. */
+    Tensor<1, dim>
+    rotate_about_y(const Tensor<1, dim> &r, const double theta)
+    {
+      const double c = std::cos(theta), s = std::sin(theta);
+      return Tensor<1, dim>({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
+    }
+  } // namespace
+
+
+
+  ExplicitSolver::ExplicitSolver(const Parameters &                         parameters,
+                                 parallel::distributed::Triangulation<dim> &tria)
+    : prm(parameters)
+    , triangulation(tria)
+    , mpi_communicator(tria.get_communicator())
+    , fe(FE_Q<dim>(1), dim)
+    , dof_handler(tria)
+  {}
+
+
+
+  void
+  ExplicitSolver::setup()
+  {
+    dof_handler.distribute_dofs(fe);
+
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    hanging_constraints.clear();
+    hanging_constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_constraints);
+    hanging_constraints.close();
+    make_hanging_vertices_conforming();
+
+    // ghost set: locally relevant DoFs and every master of a constraint
+    IndexSet ghosts = relevant;
+    for (const auto &line : hanging_constraints.get_lines())
+      for (const auto &entry : line.entries)
+        ghosts.add_index(entry.first);
+    ghosts.compress();
+    vector_partitioner =
+      std::make_shared<Utilities::MPI::Partitioner>(dof_handler.locally_owned_dofs(),
+                                                    ghosts,
+                                                    mpi_communicator);
+
+    constraint_lines.clear();
+    for (const auto &line : hanging_constraints.get_lines())
+      {
+        std::vector<std::pair<unsigned int, double>> masters;
+        for (const auto &entry : line.entries)
+          masters.emplace_back(vector_partitioner->global_to_local(entry.first),
+                               entry.second);
+        constraint_lines.emplace_back(vector_partitioner->global_to_local(line.index),
+                                      masters);
+      }
+
+    for (VectorType *vec : {&u, &v, &f, &v_old, &mass, &inv_mass, &f_ext, &u0})
+      vec->reinit(vector_partitioner);
+
+    setup_cell_data();
+    setup_mass_and_loads();
+    setup_prescribed_dofs();
+    t       = 0;
+    n_steps = 0;
+    damping_dissipation = 0;
+    boundary_work       = 0;
+  }
+
+
+
+  void
+  ExplicitSolver::make_hanging_vertices_conforming()
+  {
+    // Refinement on a curved manifold puts a hanging vertex on the curve,
+    // while the trilinear coarse neighbour's face and the FE_Q(1) constraint
+    // put it at the mean of its masters. Moving the vertex there makes the
+    // geometry agree with the displacement space, so that linear fields
+    // (rigid rotations among them) are represented exactly.
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::map<types::global_dof_index, Point<dim>> position;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int a = 0; a < 8; ++a)
+            position[dofs[fe.component_to_system_index(0, a)]] = cell->vertex(a);
+        }
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              const auto *entries =
+                hanging_constraints.get_constraint_entries(dofs[fe.component_to_system_index(0, a)]);
+              if (entries == nullptr)
+                continue;
+              Point<dim> x;
+              for (const auto &entry : *entries)
+                {
+                  const auto it = position.find(entry.first);
+                  AssertThrow(it != position.end(),
+                              ExcMessage("Internal error: master vertex of a hanging node not found."));
+                  x += entry.second * it->second;
+                }
+              cell->vertex(a) = x;
+            }
+        }
+  }
+
+
+
+  void
+  ExplicitSolver::setup_cell_data()
+  {
+    const MaterialParameters &mat    = prm.material;
+    const double              lambda = mat.lambda(), mu = mat.mu();
+    const double              c_wave = mat.wave_speed();
+    const double              qm     = prm.solver.hourglass_coefficient;
+
+    // which DoF of the FESystem is component c of vertex a
+    unsigned int dof_of[dim][8];
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      {
+        const auto ci               = fe.system_to_component_index(i);
+        dof_of[ci.first][ci.second] = i;
+      }
+
+    const unsigned int n_local = vector_partitioner->locally_owned_size() +
+                                 vector_partitioner->n_ghost_indices();
+    node_points.assign(n_local, Point<dim>());
+    node_material.assign(n_local, numbers::invalid_material_id);
+    node_component.assign(n_local, 0);
+    on_boundary.assign(n_local, false);
+
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const unsigned int i = vector_partitioner->global_to_local(dofs[dof_of[d][a]]);
+                node_points[i]    = cell->vertex(a);
+                node_material[i]  = cell->material_id();
+                node_component[i] = d;
+              }
+          for (const unsigned int face : cell->face_indices())
+            if (cell->face(face)->at_boundary())
+              for (unsigned int fv = 0; fv < 4; ++fv)
+                {
+                  const unsigned int a = GeometryInfo<dim>::face_to_cell_vertices(face, fv);
+                  for (unsigned int d = 0; d < dim; ++d)
+                    on_boundary[vector_partitioner->global_to_local(dofs[dof_of[d][a]])] = true;
+                }
+        }
+
+    n_cells   = triangulation.n_locally_owned_active_cells();
+    n_batches = (n_cells + W - 1) / W;
+    batch_data.resize_fast(std::size_t(n_batches) * Field::n_fields * W);
+    std::fill(batch_data.begin(), batch_data.end(), 0.);
+    batch_nodes.assign(std::size_t(n_batches) * 8 * W, 0);
+    batch_cell_index.assign(std::size_t(n_batches) * W, numbers::invalid_unsigned_int);
+    batch_material.assign(std::size_t(n_batches) * W, numbers::invalid_material_id);
+
+    FE_Q<dim>     fe_scalar(1);
+    QGauss<dim>   quadrature(2);
+    FEValues<dim> fe_values(fe_scalar, quadrature, update_gradients | update_JxW_values);
+
+    double min_edge = std::numeric_limits<double>::max(), min_size = min_edge,
+           min_le = min_edge, min_jac = min_edge, max_aspect = 0, min_dt = min_edge;
+
+    unsigned int c = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int batch = c / W, lane = c % W;
+          ++c;
+          double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
+          fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(cell));
+          cell->get_dof_indices(dofs);
+
+          double B[8][3] = {}, V0 = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              V0 += fe_values.JxW(q);
+              for (unsigned int a = 0; a < 8; ++a)
+                for (unsigned int j = 0; j < 3; ++j)
+                  B[a][j] += fe_values.shape_grad(a, q)[j] * fe_values.JxW(q);
+            }
+          double BB = 0;
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                data[(Field::b + a * 3 + j) * W + lane] = B[a][j] / V0;
+                BB += B[a][j] * B[a][j];
+              }
+          for (unsigned int al = 0; al < 4; ++al)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                double s = 0;
+                for (unsigned int a = 0; a < 8; ++a)
+                  s += hg[al][a] * cell->vertex(a)[j];
+                data[(Field::c + al * 3 + j) * W + lane] = s;
+              }
+
+          // sizes, L_e = V / A_max, quality
+          double emin = std::numeric_limits<double>::max(), emax = 0;
+          for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
+            {
+              const double e = cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1));
+              emin           = std::min(emin, e);
+              emax           = std::max(emax, e);
+            }
+          double amax = 0;
+          for (const unsigned int face : cell->face_indices())
+            {
+              const auto fc = cell->face(face);
+              amax = std::max(amax,
+                              0.5 * cross_product_3d(fc->vertex(3) - fc->vertex(0),
+                                                     fc->vertex(2) - fc->vertex(1))
+                                      .norm());
+            }
+          const double Le = V0 / amax;
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              Tensor<1, dim> e[3];
+              double         sign = 1;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  e[d] = cell->vertex(a ^ (1u << d)) - cell->vertex(a);
+                  if (a & (1u << d))
+                    sign = -sign;
+                }
+              const double det = sign * (e[0] * cross_product_3d(e[1], e[2]));
+              min_jac = std::min(min_jac, det / (e[0].norm() * e[1].norm() * e[2].norm()));
+            }
+          min_edge   = std::min(min_edge, emin);
+          min_size   = std::min(min_size, emax);
+          min_le     = std::min(min_le, Le);
+          max_aspect = std::max(max_aspect, emax / emin);
+
+          // damping: beta_e = 2 COEF / omega_e (omega_e = 2c/L_e) or Rayleigh
+          double beta = 0;
+          if (prm.solver.damping_model == "stiffness")
+            beta = prm.solver.stiffness_damping_coefficient * Le / c_wave;
+          else if (prm.solver.damping_model == "Rayleigh")
+            beta = prm.solver.rayleigh_beta;
+          const double omega = 2. * c_wave / Le;
+          const double xi    = 0.5 * beta * omega;
+          min_dt = std::min(min_dt, 2. / omega * (std::sqrt(1. + xi * xi) - xi));
+
+          const double k_unit = (lambda + 2. * mu) * BB / (8. * V0);
+          data[Field::volume * W + lane]    = V0;
+          data[Field::kappa * W + lane]     = qm * k_unit;
+          data[Field::kappa_ref * W + lane] = reference_hourglass_coefficient * k_unit;
+          data[Field::beta * W + lane]      = beta;
+          data[Field::lambda * W + lane]    = lambda;
+          data[Field::mu * W + lane]        = mu;
+
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              const auto idx = vector_partitioner->global_to_local(dofs[dof_of[0][a]]);
+              for (unsigned int d = 1; d < dim; ++d)
+                AssertThrow(vector_partitioner->global_to_local(dofs[dof_of[d][a]]) == idx + d,
+                            ExcMessage("Internal error: vertex DoFs not contiguous."));
+              batch_nodes[(std::size_t(batch) * 8 + a) * W + lane] = idx;
+            }
+          batch_cell_index[std::size_t(batch) * W + lane] = cell->active_cell_index();
+          batch_material[std::size_t(batch) * W + lane]   = cell->material_id();
+        }
+    // padding lanes point at node 0 with zero volume: they produce zero force
+    // and are never scattered
+
+    quality.min_edge            = Utilities::MPI::min(min_edge, mpi_communicator);
+    quality.min_longest_edge    = Utilities::MPI::min(min_size, mpi_communicator);
+    quality.min_length          = Utilities::MPI::min(min_le, mpi_communicator);
+    quality.min_scaled_jacobian = Utilities::MPI::min(min_jac, mpi_communicator);
+    quality.max_aspect_ratio    = Utilities::MPI::max(max_aspect, mpi_communicator);
+    AssertThrow(quality.min_scaled_jacobian > 0,
+                ExcMessage("The mesh has an inverted or degenerate cell (smallest "
+                           "scaled Jacobian <= 0): check Geometry/Bar/Distortion "
+                           "and the Geometry parameters."));
+    stable_dt = prm.solver.courant_factor *
+                Utilities::MPI::min(min_dt / c_wave * c_wave, mpi_communicator);
+  }
+
+
+
+  void
+  ExplicitSolver::setup_mass_and_loads()
+  {
+    const double rho = prm.material.density;
+    FE_Q<dim>     fe_scalar(1);
+    QGauss<dim>   quadrature(2);
+    FEValues<dim> fe_values(fe_scalar, quadrature, update_values | update_JxW_values);
+
+    mass = 0;
+    // row-sum lumping rho int N_a dV, cell by cell
+    unsigned int c = 0;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const unsigned int batch = c / W, lane = c % W;
+          ++c;
+          fe_values.reinit(cell);
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              double m = 0;
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                m += rho * fe_values.shape_value(a, q) * fe_values.JxW(q);
+              const unsigned int idx = batch_nodes[(std::size_t(batch) * 8 + a) * W + lane];
+              for (unsigned int d = 0; d < dim; ++d)
+                mass.local_element(idx + d) += m;
+            }
+        }
+    condense(mass);
+    mass.compress(VectorOperation::add);
+
+    // gravity load: g times the condensed row-sum mass (= condensed rho g N)
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      {
+        f_ext.local_element(i) = mass.local_element(i) * prm.solver.gravity[node_component[i]];
+        inv_mass.local_element(i) = mass.local_element(i) > 0 ? 1. / mass.local_element(i) : 0.;
+      }
+    // hanging DoFs carry neither mass nor load: they follow their masters
+    for (const auto &line : constraint_lines)
+      if (line.first < inv_mass.locally_owned_size())
+        {
+          inv_mass.local_element(line.first) = 0;
+          f_ext.local_element(line.first)    = 0;
+        }
+  }
+
+
+
+  void
+  ExplicitSolver::setup_prescribed_dofs()
+  {
+    std::map<unsigned int, PrescribedDof> dofs;
+    const auto add = [&](const unsigned int i, const unsigned int d, const unsigned int kind) {
+      if (i + d >= vector_partitioner->locally_owned_size() ||
+          hanging_constraints.is_constrained(vector_partitioner->local_to_global(i + d)))
+        return;
+      auto it = dofs.find(i + d);
+      if (it == dofs.end() || kind < it->second.kind) // fixed wins
+        dofs[i + d] = PrescribedDof{i + d, d, kind};
+    };
+
+    const std::string bore = prm.boundary.wheel_bore;
+    bore_dofs.clear();
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int face : cell->face_indices())
+          if (cell->face(face)->at_boundary())
+            {
+              const types::boundary_id id = cell->face(face)->boundary_id();
+              cell->face(face)->get_dof_indices(face_dofs);
+              for (unsigned int k = 0; k < face_dofs.size(); ++k)
+                {
+                  if (fe.face_system_to_component_index(k).first != 0)
+                    continue;
+                  const unsigned int i = vector_partitioner->global_to_local(face_dofs[k]);
+                  const auto fixed     = prm.boundary.fixed.find(id);
+                  if (fixed != prm.boundary.fixed.end())
+                    for (unsigned int d = 0; d < dim; ++d)
+                      if (fixed->second.find("xyz"[d]) != std::string::npos)
+                        add(i, d, 0);
+                  if (std::find(prm.boundary.prescribed_velocity_ids.begin(),
+                                prm.boundary.prescribed_velocity_ids.end(),
+                                id) != prm.boundary.prescribed_velocity_ids.end())
+                    for (unsigned int d = 0; d < dim; ++d)
+                      add(i, d, 1);
+                  if (id == Geometry::BoundaryIds::wheel_bore)
+                    {
+                      for (unsigned int d = 0; d < dim; ++d)
+                        {
+                          if (bore == "fixed")
+                            add(i, d, 0);
+                          else if (bore == "spinning axle")
+                            add(i, d, 2);
+                          if (i + d < vector_partitioner->locally_owned_size())
+                            bore_dofs.push_back(i + d);
+                        }
+                    }
+                }
+            }
+    std::sort(bore_dofs.begin(), bore_dofs.end());
+    bore_dofs.erase(std::unique(bore_dofs.begin(), bore_dofs.end()), bore_dofs.end());
+
+    prescribed.clear();
+    for (const auto &entry : dofs)
+      {
+        prescribed.push_back(entry.second);
+        inv_mass.local_element(entry.first) = 0;
+      }
+
+    prescribed_velocity.reset();
+    if (!prm.boundary.prescribed_velocity_ids.empty())
+      {
+        prescribed_velocity = make_vector_function(prm.boundary.prescribed_velocity_expression,
+                                                   prm.boundary.prescribed_velocity_constants,
+                                                   "x,y,z,t",
+                                                   "Boundary conditions/Prescribed velocity");
+      }
+  }
+
+
+
+  void
+  ExplicitSolver::set_time_step(const double time_step)
+  {
+    AssertThrow(time_step > 0, ExcMessage("Internal error: time step <= 0."));
+    dt = time_step;
+  }
+
+
+
+  void
+  ExplicitSolver::condense(VectorType &x) const
+  {
+    for (const auto &line : constraint_lines)
+      {
+        const double value = x.local_element(line.first);
+        for (const auto &m : line.second)
+          x.local_element(m.first) += m.second * value;
+        x.local_element(line.first) = 0;
+      }
+  }
+
+
+
+  void
+  ExplicitSolver::distribute(VectorType &x) const
+  {
+    for (const auto &line : constraint_lines)
+      {
+        double value = 0;
+        for (const auto &m : line.second)
+          value += m.second * x.local_element(m.first);
+        x.local_element(line.first) = value;
+      }
+  }
+
+
+
+  void
+  ExplicitSolver::set_displacement(
+    const std::function<Tensor<1, dim>(const Point<dim> &)> &u_of_X,
+    const types::material_id                               material)
+  {
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      for (unsigned int lane = 0; lane < W; ++lane)
+        if (batch_cell_index[std::size_t(batch) * W + lane] != numbers::invalid_unsigned_int &&
+            (material == numbers::invalid_material_id ||
+             batch_material[std::size_t(batch) * W + lane] == material))
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              const unsigned int idx = batch_nodes[(std::size_t(batch) * 8 + a) * W + lane];
+              const Tensor<1, dim> value = u_of_X(node_points[idx]);
+              for (unsigned int d = 0; d < dim; ++d)
+                u.local_element(idx + d) = value[d];
+            }
+    u.update_ghost_values();
+    distribute(u);
+    u0 = u;
+    for (auto &p : prescribed)
+      p.u_prev = u.local_element(p.index);
+  }
+
+
+
+  void
+  ExplicitSolver::set_velocity(
+    const std::function<Tensor<1, dim>(const Point<dim> &, const types::material_id)> &v_of_X)
+  {
+    for (unsigned int i = 0; i < node_points.size(); ++i)
+      if (node_material[i] != numbers::invalid_material_id)
+        v.local_element(i) = v_of_X(node_points[i], node_material[i])[node_component[i]];
+    v.update_ghost_values();
+    distribute(v);
+    for (auto &p : prescribed)
+      p.v_prev = v.local_element(p.index);
+  }
+
+
+
+  double
+  ExplicitSolver::assemble_forces(const VectorType &u_in,
+                                  const VectorType *v_in,
+                                  VectorType &      f_out) const
+  {
+    f_out = 0.;
+    const double *U = u_in.begin();
+    const double *V = v_in ? v_in->begin() : nullptr;
+    double *      F = f_out.begin();
+    const bool    damping = (v_in != nullptr) && prm.solver.damping_model != "none";
+
+    alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
+    std::fill(std::begin(vb), std::end(vb), 0.);
+    double power = 0;
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double *      data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < W; ++l)
+            {
+              const unsigned int idx = nodes[a * W + l];
+              for (unsigned int d = 0; d < 3; ++d)
+                ub[(a * 3 + d) * W + l] = U[idx + d];
+              if (damping)
+                for (unsigned int d = 0; d < 3; ++d)
+                  vb[(a * 3 + d) * W + l] = V[idx + d];
+            }
+        power += damping ? batch_forces<true>(data, ub, vb, fb) :
+                           batch_forces<false>(data, ub, vb, fb);
+        const unsigned int n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < n_valid; ++l)
+            {
+              const unsigned int idx = nodes[a * W + l];
+              for (unsigned int d = 0; d < 3; ++d)
+                F[idx + d] += fb[(a * 3 + d) * W + l];
+            }
+      }
+    condense(f_out);
+    f_out.compress(VectorOperation::add);
+    return power;
+  }
+
+
+
+  void
+  ExplicitSolver::compute_internal_force(VectorType &force) const
+  {
+    force.reinit(vector_partitioner);
+    assemble_forces(u, nullptr, force);
+  }
+
+
+
+  void
+  ExplicitSolver::strain_energies(Energies &e) const
+  {
+    const double *U = u.begin();
+    double        ie = 0, hge = 0, hge_ref = 0;
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double *      data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int l = 0; l < n_valid; ++l)
+          {
+            double H[3][3] = {};
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+            double E[3][3], EE = 0;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  double hth = 0;
+                  for (unsigned int k = 0; k < 3; ++k)
+                    hth += H[k][i] * H[k][j];
+                  E[i][j] = 0.5 * (H[i][j] + H[j][i] + hth);
+                  EE += E[i][j] * E[i][j];
+                }
+            const double trE = E[0][0] + E[1][1] + E[2][2];
+            ie += data[Field::volume * W + l] *
+                  (0.5 * data[Field::lambda * W + l] * trE * trE + data[Field::mu * W + l] * EE);
+            double gg = 0;
+            for (unsigned int al = 0; al < 4; ++al)
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  double s = 0;
+                  for (unsigned int a = 0; a < 8; ++a)
+                    s += hg[al][a] * U[nodes[a * W + l] + i];
+                  for (unsigned int j = 0; j < 3; ++j)
+                    s -= data[(Field::c + al * 3 + j) * W + l] * H[i][j];
+                  gg += s * s;
+                }
+            hge += 0.5 * data[Field::kappa * W + l] * gg;
+            hge_ref += 0.5 * data[Field::kappa_ref * W + l] * gg;
+          }
+      }
+    e.internal            = ie;
+    e.hourglass           = hge;
+    e.hourglass_reference = hge_ref;
+  }
+
+
+
+  void
+  ExplicitSolver::step(Energies *energies)
+  {
+    Assert(dt > 0, ExcInternalError());
+    const bool   first = (n_steps == 0);
+    const double h     = first ? 0.5 * dt : dt; // v_{1/2} = v_0 + dt/2 a_0
+
+    double gravity_work = 0;
+    if (energies)
+      {
+        energies->time = t;
+        energies->step = n_steps;
+        strain_energies(*energies);
+        for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+          gravity_work += f_ext.local_element(i) * (u.local_element(i) - u0.local_element(i));
+      }
+
+    const bool   damping = prm.solver.damping_model != "none";
+    const double power   = assemble_forces(u, damping ? &v : nullptr, f);
+
+    double *           U = u.begin();
+    double *           V = v.begin();
+    const double *     F = f.begin();
+    const double *     G = f_ext.begin();
+    const double *     IM = inv_mass.begin();
+    const double *     M  = mass.begin();
+    const unsigned int n  = u.locally_owned_size();
+    double             ke = 0;
+    if (energies == nullptr)
+      {
+#pragma omp simd
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            V[i] += h * IM[i] * (G[i] - F[i]);
+            U[i] += dt * V[i];
+          }
+      }
+    else
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double vo = V[i];
+            V[i] += h * IM[i] * (G[i] - F[i]);
+            U[i] += dt * V[i];
+            const double va = first ? vo : 0.5 * (vo + V[i]);
+            if (IM[i] > 0)
+              ke += 0.5 * M[i] * va * va;
+          }
+      }
+
+    // prescribed DoFs: fixed, velocity function (at the middle of the
+    // step), spinning axle
+    double           work_step = 0;
+    if (prescribed_velocity)
+      prescribed_velocity->set_time(t + 0.5 * dt);
+    const double     t_new  = t + dt;
+    const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
+    const double     omega  = prm.initial.wheel_angular_velocity;
+    for (auto &p : prescribed)
+      {
+        double u_new = p.u_prev;
+        if (p.kind == 1)
+          u_new = p.u_prev + dt * prescribed_velocity->value(node_points[p.index],
+                                                              p.component);
+        else if (p.kind == 2)
+          {
+            const Tensor<1, dim> r = node_points[p.index] - centre;
+            u_new = (rotate_about_y(r, omega * t_new) - r)[p.component];
+          }
+        const double v_new = (u_new - p.u_prev) / dt;
+        // reaction that enforces the motion, and its work over the step
+        // over [t_{n-1/2}, t_{n+1/2}] (the first step: [0, dt/2])
+        const double r  = M[p.index] * (v_new - p.v_prev) / h - (G[p.index] - F[p.index]);
+        work_step += r * h * 0.5 * (p.v_prev + v_new);
+        const double va = first ? p.v_prev : 0.5 * (p.v_prev + v_new);
+        if (energies)
+          ke += 0.5 * M[p.index] * va * va;
+        U[p.index] = u_new;
+        V[p.index] = v_new;
+        p.u_prev   = u_new;
+        p.v_prev   = v_new;
+      }
+    if (energies)
+      {
+        // dissipation and boundary work up to t_n: all earlier steps plus
+        // half of the current one (none at t_0)
+        const double half     = first ? 0. : 0.5;
+        const double local[7] = {ke,
+                                 gravity_work,
+                                 damping_dissipation + half * dt * power,
+                                 boundary_work + half * work_step,
+                                 energies->internal,
+                                 energies->hourglass,
+                                 energies->hourglass_reference};
+        double       global[7];
+        Utilities::MPI::sum(ArrayView<const double>(local, 7),
+                            mpi_communicator,
+                            ArrayView<double>(global, 7));
+        energies->kinetic             = global[0];
+        energies->damping             = global[2];
+        energies->external_work       = global[1] + global[3];
+        energies->internal            = global[4];
+        energies->hourglass           = global[5];
+        energies->hourglass_reference = global[6];
+      }
+    damping_dissipation += h * power;
+    boundary_work += work_step;
+
+    u.update_ghost_values();
+    v.update_ghost_values();
+    distribute(u);
+    distribute(v);
+    t = t_new;
+    ++n_steps;
+  }
+
+
+
+  std::vector<CellStress>
+  ExplicitSolver::cell_stresses() const
+  {
+    std::vector<CellStress> result(triangulation.n_active_cells());
+    const double *          U = u.begin();
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double *      data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int l = 0; l < n_valid; ++l)
+          {
+            Tensor<2, dim> H;
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+            const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
+            const Tensor<2, dim> E = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
+            const Tensor<2, dim> S = data[Field::lambda * W + l] * trace(E) *
+                                       Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
+                                     2. * data[Field::mu * W + l] * E;
+            const Tensor<2, dim> sigma = F * S * transpose(F) / determinant(F);
+            const Tensor<2, dim> dev   = sigma - trace(sigma) / 3. *
+                                                 Tensor<2, dim>(unit_symmetric_tensor<dim>());
+            CellStress &cs           = result[batch_cell_index[std::size_t(batch) * W + l]];
+            cs.second_piola_kirchhoff = S;
+            cs.von_mises              = std::sqrt(1.5 * scalar_product(dev, dev));
+          }
+      }
+    return result;
+  }
+
+
+
+  double
+  ExplicitSolver::total_mass(const types::material_id material) const
+  {
+    double m = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); i += 1)
+      if (material == numbers::invalid_material_id || node_material[i] == material)
+        m += mass.local_element(i);
+    return Utilities::MPI::sum(m, mpi_communicator) / dim;
+  }
+
+
+
+  double
+  ExplicitSolver::mesh_volume(const types::material_id material) const
+  {
+    double vol = 0;
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      for (unsigned int l = 0; l < std::min(W, n_cells - batch * W); ++l)
+        if (material == numbers::invalid_material_id ||
+            batch_material[std::size_t(batch) * W + l] == material)
+          vol += batch_data[(std::size_t(batch) * Field::n_fields + Field::volume) * W + l];
+    return Utilities::MPI::sum(vol, mpi_communicator);
+  }
+
+
+
+  Tensor<1, dim>
+  ExplicitSolver::bore_displacement() const
+  {
+    double local[4] = {0, 0, 0, 0};
+    for (const unsigned int i : bore_dofs)
+      {
+        const unsigned int d = node_component[i];
+        local[d] += u.local_element(i);
+        if (d == 0)
+          local[3] += 1;
+      }
+    double global[4];
+    Utilities::MPI::sum(ArrayView<const double>(local, 4), mpi_communicator, ArrayView<double>(global, 4));
+    Tensor<1, dim> mean;
+    if (global[3] > 0)
+      for (unsigned int d = 0; d < dim; ++d)
+        mean[d] = global[d] / global[3];
+    return mean;
+  }
+} // namespace WheelRail

@@ -1,0 +1,461 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/tria.h>
+
+#include <wheelrail/geometry.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace WheelRail
+{
+  namespace Geometry
+  {
+    namespace
+    {
+      /**
+       * The rail head as a chart: the box (x, y, zeta), zeta in [-H, 0],
+       * is mapped to z = -H + (zeta + H)/H (z_top(y) + H), so that zeta = 0
+       * is the circular top z_top(y) = sqrt(rho^2 - y^2) - rho and the
+       * bottom stays flat. Refinement thus stays on the true profile.
+       */
+      class RailChart : public ChartManifold<dim>
+      {
+      public:
+        RailChart(const double height, const double profile_radius)
+          : height(height)
+          , radius(profile_radius)
+        {}
+
+        double
+        top(const double y) const
+        {
+          return std::sqrt(radius * radius - y * y) - radius;
+        }
+
+        Point<dim>
+        pull_back(const Point<dim> &p) const override
+        {
+          return Point<dim>(p[0],
+                            p[1],
+                            -height + (p[2] + height) * height /
+                                        (top(p[1]) + height));
+        }
+
+        Point<dim>
+        push_forward(const Point<dim> &q) const override
+        {
+          return Point<dim>(q[0],
+                            q[1],
+                            -height + (q[2] + height) / height *
+                                        (top(q[1]) + height));
+        }
+
+        std::unique_ptr<Manifold<dim>>
+        clone() const override
+        {
+          return std::make_unique<RailChart>(height, radius);
+        }
+
+      private:
+        const double height;
+        const double radius;
+      };
+
+
+
+      /** Coarse cell size that halves exactly onto h_min. */
+      double
+      effective_coarse_size(const GeometryParameters &p)
+      {
+        const double levels = std::round(std::log2(p.coarse_cell_size / p.h_min));
+        return p.h_min * std::pow(2., std::max(0., levels));
+      }
+
+
+
+      /**
+       * Append a structured block of nx x ny x nz hexahedra whose vertex
+       * (i, j, k) lies at position(i, j, k). With @p periodic_i the index
+       * i = nx is identified with i = 0 (the closed wheel).
+       */
+      template <typename PositionFunction>
+      void
+      add_block(const unsigned int         nx,
+                const unsigned int         ny,
+                const unsigned int         nz,
+                const bool                 periodic_i,
+                const types::material_id   material,
+                const PositionFunction &   position,
+                std::vector<Point<dim>> &  vertices,
+                std::vector<CellData<dim>> &cells)
+      {
+        const unsigned int offset = vertices.size();
+        const unsigned int vx     = periodic_i ? nx : nx + 1;
+        for (unsigned int k = 0; k <= nz; ++k)
+          for (unsigned int j = 0; j <= ny; ++j)
+            for (unsigned int i = 0; i < vx; ++i)
+              vertices.push_back(position(i, j, k));
+        const auto index = [&](unsigned int i, unsigned int j, unsigned int k) {
+          return offset + (i % vx) + vx * (j + (ny + 1) * k);
+        };
+        for (unsigned int k = 0; k < nz; ++k)
+          for (unsigned int j = 0; j < ny; ++j)
+            for (unsigned int i = 0; i < nx; ++i)
+              {
+                CellData<dim> cell;
+                for (unsigned int v = 0; v < 8; ++v)
+                  cell.vertices[v] =
+                    index(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1));
+                cell.material_id = material;
+                cells.push_back(cell);
+              }
+      }
+
+
+
+      /** Distance of (a, b, c) to the box [a0,a1] x [b0,b1] x [c0,c1]. */
+      double
+      box_distance(const double a,
+                   const double b,
+                   const double c,
+                   const double a0,
+                   const double a1,
+                   const double b0,
+                   const double b1,
+                   const double c0,
+                   const double c1)
+      {
+        const double da = std::max({a0 - a, 0., a - a1});
+        const double db = std::max({b0 - b, 0., b - b1});
+        const double dc = std::max({c0 - c, 0., c - c1});
+        return std::sqrt(da * da + db * db + dc * dc);
+      }
+
+
+
+      /** Longest edge of a cell (the size the refinement targets). */
+      template <typename CellIterator>
+      double
+      longest_edge(const CellIterator &cell)
+      {
+        double h = 0;
+        for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
+          h = std::max(h,
+                       cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
+        return h;
+      }
+
+
+
+      /** Target size at the centre of a cell (SPEC 1 local refinement). */
+      double
+      target_size(const GeometryParameters &p,
+                  const types::material_id  material,
+                  const Point<dim> &        c,
+                  const double              coarse)
+      {
+        const double g        = p.grading;
+        const bool   has_zone = p.zone_length > 0;
+        if (material == MaterialIds::rail)
+          {
+            if (!has_zone)
+              return coarse;
+            const double top =
+              std::sqrt(p.rail_profile_radius * p.rail_profile_radius -
+                        c[1] * c[1]) -
+              p.rail_profile_radius;
+            const double d = box_distance(c[0],
+                                          c[1],
+                                          top - c[2],
+                                          -0.5 * p.zone_length,
+                                          0.5 * p.zone_length,
+                                          -p.zone_half_width,
+                                          p.zone_half_width,
+                                          0,
+                                          p.zone_depth);
+            return std::min(coarse, p.h_min + g * d);
+          }
+        if (material == MaterialIds::wheel)
+          {
+            const Point<dim> centre = wheel_centre(p);
+            const double     dx     = c[0] - centre[0];
+            const double     dz     = c[2] - centre[2];
+            const double     depth  = p.wheel_radius - std::sqrt(dx * dx + dz * dz);
+            double           h      = coarse + g * depth;
+            if (has_zone && p.refine_wheel)
+              {
+                // arc length from the lowest tread point, positive towards +x
+                const double s  = p.wheel_radius * std::atan2(dx, -dz);
+                const double sO = -p.wheel_centre_x;
+                const double d  = box_distance(s,
+                                              c[1],
+                                              depth,
+                                              sO - 0.5 * p.zone_length,
+                                              sO + 0.5 * p.zone_length,
+                                              -p.zone_half_width,
+                                              p.zone_half_width,
+                                              0,
+                                              p.zone_depth);
+                h = std::min(h, p.h_min + g * d);
+              }
+            return h;
+          }
+        return std::numeric_limits<double>::max(); // the bar is not refined
+      }
+
+
+
+      void
+      set_boundary_ids(const GeometryParameters &p, Triangulation<dim> &tria)
+      {
+        const Point<dim> centre = wheel_centre(p);
+        const RailChart  chart(p.rail_head_height, p.rail_profile_radius);
+        for (const auto &cell : tria.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const Point<dim> c   = cell->face(f)->center();
+                const double     eps = 1e-6;
+                types::boundary_id id;
+                switch (cell->material_id())
+                  {
+                    case MaterialIds::wheel:
+                      {
+                        const double r = std::hypot(c[0] - centre[0], c[2] - centre[2]);
+                        if (std::abs(std::abs(c[1]) - 0.5 * p.tread_width) <
+                            eps * p.tread_width)
+                          id = BoundaryIds::wheel_side;
+                        else if (r > 0.5 * (p.wheel_radius + p.bore_radius))
+                          id = BoundaryIds::wheel_tread;
+                        else
+                          id = BoundaryIds::wheel_bore;
+                        break;
+                      }
+                    case MaterialIds::rail:
+                      {
+                        const Point<dim> q = chart.pull_back(c);
+                        const double     H = p.rail_head_height;
+                        if (std::abs(q[2]) < eps * H)
+                          id = BoundaryIds::rail_top;
+                        else if (std::abs(q[2] + H) < eps * H)
+                          id = BoundaryIds::rail_bottom;
+                        else if (std::abs(std::abs(q[1]) - 0.5 * p.rail_head_width) <
+                                 eps * p.rail_head_width)
+                          id = BoundaryIds::rail_side;
+                        else
+                          id = BoundaryIds::rail_end;
+                        break;
+                      }
+                    default:
+                      {
+                        if (std::abs(c[0]) < eps * p.bar_length)
+                          id = BoundaryIds::bar_start;
+                        else if (std::abs(c[0] - p.bar_length) < eps * p.bar_length)
+                          id = BoundaryIds::bar_end;
+                        else
+                          id = BoundaryIds::bar_side;
+                      }
+                  }
+                cell->face(f)->set_boundary_id(id);
+              }
+      }
+
+
+
+      void
+      build_wheel_and_rail(const GeometryParameters &  p,
+                           std::vector<Point<dim>> &   vertices,
+                           std::vector<CellData<dim>> &cells)
+      {
+        const double coarse = effective_coarse_size(p);
+
+        // Wheel: (theta, y, radial) block, theta from the lowest point
+        // towards +x, radial index from the tread inwards; coarse cells of
+        // about 4 x the coarse size at the tread, refined later.
+        const double R = p.wheel_radius;
+        unsigned int n_theta = p.wheel_circumferential_cells;
+        if (n_theta == 0)
+          n_theta = 4 * static_cast<unsigned int>(
+                          std::ceil(2 * M_PI * R / (4 * 4 * coarse)));
+        n_theta = std::max(n_theta, 8u);
+        const double d_theta = 2 * M_PI / n_theta;
+        // geometric radial layers with about square cells in (r, theta)
+        const unsigned int n_radial = std::max<unsigned int>(
+          1,
+          std::round(std::log(p.bore_radius / R) / std::log(1 - d_theta)));
+        const double ratio   = std::pow(p.bore_radius / R, 1. / n_radial);
+        const unsigned int n_y =
+          std::max<unsigned int>(1, std::ceil(p.tread_width / (4 * coarse) - 1e-9));
+        const Point<dim> centre = wheel_centre(p);
+        add_block(n_theta,
+                  n_y,
+                  n_radial,
+                  true,
+                  MaterialIds::wheel,
+                  [&](unsigned int i, unsigned int j, unsigned int k) {
+                    const double r = R * std::pow(ratio, k);
+                    const double t = i * d_theta;
+                    return Point<dim>(centre[0] + r * std::sin(t),
+                                      -0.5 * p.tread_width + j * p.tread_width / n_y,
+                                      centre[2] - r * std::cos(t));
+                  },
+                  vertices,
+                  cells);
+
+        // Rail head: box (x, y, zeta) pushed onto the arc top.
+        const RailChart    chart(p.rail_head_height, p.rail_profile_radius);
+        const double       L  = p.rail_end_x - p.rail_start_x;
+        const unsigned int nx = std::ceil(L / coarse - 1e-9);
+        const unsigned int ny = std::ceil(p.rail_head_width / coarse - 1e-9);
+        const unsigned int nz = std::ceil(p.rail_head_height / coarse - 1e-9);
+        add_block(nx,
+                  ny,
+                  nz,
+                  false,
+                  MaterialIds::rail,
+                  [&](unsigned int i, unsigned int j, unsigned int k) {
+                    return chart.push_forward(
+                      Point<dim>(p.rail_start_x + i * L / nx,
+                                 -0.5 * p.rail_head_width + j * p.rail_head_width / ny,
+                                 -p.rail_head_height + k * p.rail_head_height / nz));
+                  },
+                  vertices,
+                  cells);
+      }
+
+
+
+      void
+      build_bar(const GeometryParameters &  p,
+                std::vector<Point<dim>> &   vertices,
+                std::vector<CellData<dim>> &cells)
+      {
+        const unsigned int nx = p.bar_cells[0], ny = p.bar_cells[1],
+                           nz = p.bar_cells[2];
+        const double hx = p.bar_length / nx, hy = p.bar_width / ny,
+                     hz = p.bar_height / nz;
+        add_block(nx,
+                  ny,
+                  nz,
+                  false,
+                  MaterialIds::bar,
+                  [&](unsigned int i, unsigned int j, unsigned int k) {
+                    Point<dim> x(i * hx, -0.5 * p.bar_width + j * hy,
+                                 -0.5 * p.bar_height + k * hz);
+                    const bool interior = i > 0 && i < nx && j > 0 && j < ny &&
+                                          k > 0 && k < nz;
+                    if (interior && p.bar_distortion > 0)
+                      {
+                        // deterministic pseudo-random direction per vertex
+                        const double a = std::sin(12.9898 * i + 78.233 * j + 37.719 * k);
+                        const double b = std::sin(93.989 * i + 67.345 * j + 11.135 * k);
+                        const double c = std::sin(41.235 * i + 24.414 * j + 73.156 * k);
+                        x[0] += p.bar_distortion * hx * a;
+                        x[1] += p.bar_distortion * hy * b;
+                        x[2] += p.bar_distortion * hz * c;
+                      }
+                    return x;
+                  },
+                  vertices,
+                  cells);
+      }
+    } // namespace
+
+
+
+    Point<dim>
+    wheel_centre(const GeometryParameters &p)
+    {
+      return Point<dim>(p.wheel_centre_x, 0., p.wheel_centre_z());
+    }
+
+
+
+    double
+    exact_volume(const GeometryParameters &p, const types::material_id material)
+    {
+      switch (material)
+        {
+          case MaterialIds::wheel:
+            return M_PI *
+                   (p.wheel_radius * p.wheel_radius - p.bore_radius * p.bore_radius) *
+                   p.tread_width;
+          case MaterialIds::rail:
+            {
+              const double a   = 0.5 * p.rail_head_width;
+              const double rho = p.rail_profile_radius;
+              // integral over y of (z_top(y) + H), z_top = sqrt(rho^2-y^2)-rho
+              const double area = a * std::sqrt(rho * rho - a * a) +
+                                  rho * rho * std::asin(a / rho) - 2 * a * rho +
+                                  2 * a * p.rail_head_height;
+              return area * (p.rail_end_x - p.rail_start_x);
+            }
+          default:
+            return p.bar_length * p.bar_width * p.bar_height;
+        }
+    }
+
+
+
+    void
+    build(const GeometryParameters &                 p,
+          const std::string &                        geometry_type,
+          parallel::distributed::Triangulation<dim> &triangulation)
+    {
+      std::vector<Point<dim>>    vertices;
+      std::vector<CellData<dim>> cells;
+      if (geometry_type == "bar")
+        build_bar(p, vertices, cells);
+      else
+        build_wheel_and_rail(p, vertices, cells);
+
+      // The two bodies are separate coarse meshes in one triangulation:
+      // vertices are not merged, so wheel and rail never share a node.
+      Triangulation<dim> coarse;
+      coarse.create_triangulation(vertices, cells, SubCellData());
+      for (const auto &cell : coarse.active_cell_iterators())
+        AssertThrow(cell->measure() > 0,
+                    ExcMessage("Internal error: inverted coarse cell."));
+      set_boundary_ids(p, coarse);
+      for (const auto &cell : coarse.active_cell_iterators())
+        if (cell->material_id() == MaterialIds::wheel)
+          cell->set_all_manifold_ids(ManifoldIds::wheel);
+        else if (cell->material_id() == MaterialIds::rail)
+          cell->set_all_manifold_ids(ManifoldIds::rail);
+
+      triangulation.copy_triangulation(coarse);
+      triangulation.set_manifold(ManifoldIds::wheel,
+                                 CylindricalManifold<dim>(Tensor<1, dim>({0., 1., 0.}),
+                                                          wheel_centre(p)));
+      triangulation.set_manifold(ManifoldIds::rail,
+                                 RailChart(p.rail_head_height, p.rail_profile_radius));
+
+      if (geometry_type == "bar")
+        return;
+
+      const double coarse_size = effective_coarse_size(p);
+      for (unsigned int cycle = 0; cycle < 20; ++cycle)
+        {
+          unsigned int n_flagged = 0;
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() &&
+                longest_edge(cell) >
+                  (1 + 1e-6) * target_size(p,
+                                           cell->material_id(),
+                                           cell->center(),
+                                           coarse_size))
+              {
+                cell->set_refine_flag();
+                ++n_flagged;
+              }
+          if (Utilities::MPI::sum(n_flagged, triangulation.get_communicator()) == 0)
+            break;
+          triangulation.execute_coarsening_and_refinement();
+        }
+    }
+  } // namespace Geometry
+} // namespace WheelRail

@@ -1,0 +1,105 @@
+/**
+ * wheelrail: transient 3D frictional rolling contact of a wheel on a rail by
+ * the explicit finite element method. Usage: see print_usage() or README.md.
+ */
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <wheelrail/parameters.h>
+#include <wheelrail/simulator.h>
+
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+namespace
+{
+  void
+  print_usage(std::ostream &out)
+  {
+    out << "Usage: wheelrail CASE.prm          run the case\n"
+           "       mpirun -np N wheelrail CASE.prm\n"
+           "       wheelrail --help             this text and every parameter with its\n"
+           "                                    unit, default and allowed range\n";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm     comm  = MPI_COMM_WORLD;
+  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
+
+  const std::string input = argc > 1 ? argv[1] : "";
+  const auto fail = [&](std::string message) {
+    // name the input file as the user knows it, without its directory
+    const std::string name = std::filesystem::path(input).filename().string();
+    for (std::size_t pos; !input.empty() && (pos = message.find(input)) != std::string::npos;)
+      message.replace(pos, input.size(), name);
+    if (rank == 0 || ranks > 1)
+      std::cerr << (ranks > 1 ? "[rank " + std::to_string(rank) + "] " : std::string())
+                << "Error: " << message << std::endl;
+    if (ranks > 1)
+      MPI_Abort(comm, 1);
+    return 1;
+  };
+
+  try
+    {
+      ParameterHandler       prm;
+      WheelRail::Parameters  parameters;
+      WheelRail::Parameters::declare_parameters(prm);
+
+      const std::string arg = argc > 1 ? argv[1] : "";
+      if (arg == "--help" || arg == "-h")
+        {
+          if (rank == 0)
+            {
+              print_usage(std::cout);
+              std::cout << "\nParameters (defaults shown):\n\n";
+              prm.print_parameters(std::cout, ParameterHandler::Text);
+            }
+          return 0;
+        }
+      if (argc != 2)
+        {
+          if (rank == 0)
+            print_usage(std::cerr);
+          return 1;
+        }
+      parameters.parse(prm, arg);
+      WheelRail::Simulator simulator(parameters, prm, comm);
+      simulator.run();
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      std::string text = info.str();
+      // print_info indents every line; keep the message compact
+      std::string compact;
+      std::istringstream lines(text);
+      for (std::string line; std::getline(lines, line);)
+        {
+          const auto first = line.find_first_not_of(" \t");
+          if (first == std::string::npos)
+            continue;
+          compact += (compact.empty() ? "" : "\n  ") + line.substr(first);
+        }
+      return fail(compact.empty() ? std::string(e.get_exc_name()) : compact);
+    }
+  catch (const std::exception &e)
+    {
+      return fail(e.what());
+    }
+  catch (...)
+    {
+      return fail("unknown exception");
+    }
+  return 0;
+}

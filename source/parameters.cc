@@ -1,0 +1,752 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/parameters.h>
+
+#include <cmath>
+#include <fstream>
+
+namespace WheelRail
+{
+  namespace
+  {
+    /** Pattern for a vector of three real numbers "a, b, c". */
+    Patterns::List
+    vector_pattern()
+    {
+      return Patterns::List(Patterns::Double(), 3, 3, ",");
+    }
+
+    Tensor<1, 3>
+    get_vector(const ParameterHandler &prm, const std::string &name)
+    {
+      const auto values = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get(name), ','));
+      Tensor<1, 3> t;
+      for (unsigned int d = 0; d < 3; ++d)
+        t[d] = values[d];
+      return t;
+    }
+  } // namespace
+
+
+
+  void
+  ProblemParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Problem");
+    prm.declare_entry("Geometry",
+                      "wheel and rail",
+                      Patterns::Selection("wheel and rail|bar"),
+                      "Bodies to mesh: 'wheel and rail' is the model of the "
+                      "paper (SPEC 1); 'bar' is a straight prismatic bar "
+                      "(subsection Geometry/Bar) for verification.");
+    prm.declare_entry(
+      "Mode",
+      "explicit dynamics",
+      Patterns::Selection("explicit dynamics|patch test|rigid rotation"),
+      "'explicit dynamics': central-difference time integration. "
+      "'patch test': impose the linear displacement u = G X "
+      "(Verification/Displacement gradient) on every node and compare the "
+      "element stresses with the exact St. Venant-Kirchhoff stress and the "
+      "interior nodal forces with zero. 'rigid rotation': impose "
+      "u = (R - I)(X - c) on the wheel (or the bar), R a rotation by "
+      "Verification/Rotation angle, and report stress and internal force "
+      "(exactly zero for an objective element).");
+    prm.declare_entry("Output directory",
+                      "results",
+                      Patterns::DirectoryName(),
+                      "Directory for all files of the run; created if "
+                      "missing. Must not be named 'output' in a test.");
+    prm.declare_entry("Test mode",
+                      "false",
+                      Patterns::Bool(),
+                      "Reproducible screen output for the test suite: no wall "
+                      "times, no paths, no VTU files; results in mm, kN, MPa.");
+    prm.declare_entry("Dry run",
+                      "false",
+                      Patterns::Bool(),
+                      "Parse, build the mesh, print the setup summary and "
+                      "stop without time stepping.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ProblemParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Problem");
+    geometry         = prm.get("Geometry");
+    mode             = prm.get("Mode");
+    output_directory = prm.get("Output directory");
+    test_mode        = prm.get_bool("Test mode");
+    dry_run          = prm.get_bool("Dry run");
+    prm.leave_subsection();
+    AssertThrow(!output_directory.empty(),
+                ExcMessage("Problem/Output directory must not be empty."));
+  }
+
+
+
+  void
+  GeometryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.enter_subsection("Wheel");
+      prm.declare_entry("Radius",
+                        "0.46",
+                        Patterns::Double(0.05, 2.0),
+                        "Rolling radius R_w of the cylindrical tread [m], "
+                        "range [0.05, 2].");
+      prm.declare_entry("Bore radius",
+                        "0.09",
+                        Patterns::Double(0.005, 1.9),
+                        "Radius of the hub bore [m], range [0.005, 1.9]; must "
+                        "be below 0.8 R_w.");
+      prm.declare_entry("Tread width",
+                        "0.07",
+                        Patterns::Double(0.005, 0.5),
+                        "Width of the wheel (tread) along the axle y [m], "
+                        "range [0.005, 0.5].");
+      prm.declare_entry("Centre x",
+                        "-0.15",
+                        Patterns::Double(-10, 10),
+                        "Initial x of the wheel centre (position A = -L1) [m], "
+                        "range [-10, 10]; must lie on the rail.");
+      prm.declare_entry("Initial gap",
+                        "0.0",
+                        Patterns::Double(-0.001, 0.1),
+                        "Vertical gap between the lowest tread point and O "
+                        "before any load [m], range [-0.001, 0.1].");
+      prm.declare_entry("Circumferential cells",
+                        "0",
+                        Patterns::Integer(0, 4096),
+                        "Number of coarse cells around the wheel [-], "
+                        "range [0, 4096]; 0 = chosen from the coarse cell "
+                        "size at the tread.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Rail");
+      prm.declare_entry("Head height",
+                        "0.036",
+                        Patterns::Double(0.005, 0.5),
+                        "Height H1 of the rail head at y = 0 [m], range "
+                        "[0.005, 0.5].");
+      prm.declare_entry("Head width",
+                        "0.07",
+                        Patterns::Double(0.005, 0.5),
+                        "Lateral width of the rail head [m], range "
+                        "[0.005, 0.5].");
+      prm.declare_entry("Profile radius",
+                        "0.3",
+                        Patterns::Double(0.01, 1e6),
+                        "Radius of the circular rail-top profile in the y-z "
+                        "plane [m], range [0.01, 1e6]; must exceed half the "
+                        "head width.");
+      prm.declare_entry("Start x",
+                        "-0.3",
+                        Patterns::Double(-10, 10),
+                        "x of the rail's rear end [m], range [-10, 10].");
+      prm.declare_entry("End x",
+                        "0.12",
+                        Patterns::Double(-10, 10),
+                        "x of the rail's front end [m], range [-10, 10]; "
+                        "must exceed Start x.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      prm.declare_entry("Coarse cell size",
+                        "0.012",
+                        Patterns::Double(1e-4, 1.0),
+                        "Target edge length of the coarse mesh at the rail "
+                        "and at the wheel tread [m], range [1e-4, 1].");
+      prm.declare_entry("Minimum cell size",
+                        "0.00033",
+                        Patterns::Double(1e-5, 1.0),
+                        "h_min: the solution zone (rail) and the matching "
+                        "arc of the wheel tread are refined until their "
+                        "cells' longest edge is at most this [m], range "
+                        "[1e-5, 1]. The paper: 0.33 mm.");
+      prm.declare_entry("Solution zone length",
+                        "0.03",
+                        Patterns::Double(0, 1),
+                        "Length L2 of the solution zone along x, centred on "
+                        "O [m], range [0, 1]; 0 = no local refinement.");
+      prm.declare_entry("Solution zone half width",
+                        "0.01",
+                        Patterns::Double(0, 0.5),
+                        "Lateral half-width of the solution zone [m], range "
+                        "[0, 0.5].");
+      prm.declare_entry("Solution zone depth",
+                        "0.005",
+                        Patterns::Double(0, 0.5),
+                        "Depth of the solution zone below the rail top (and "
+                        "below the wheel tread) [m], range [0, 0.5].");
+      prm.declare_entry("Grading",
+                        "0.5",
+                        Patterns::Double(0.05, 4),
+                        "Growth of the target cell size with the distance d "
+                        "from the solution zone, h = h_min + Grading d [-], "
+                        "range [0.05, 4].");
+      prm.declare_entry("Refine wheel",
+                        "true",
+                        Patterns::Bool(),
+                        "Refine the arc of the wheel tread that meets the "
+                        "solution zone when the wheel rolls from Centre x "
+                        "to O.");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Bar");
+      prm.declare_entry("Length",
+                        "1.0",
+                        Patterns::Double(1e-4, 100),
+                        "Bar length along x [m], range [1e-4, 100]. The bar "
+                        "spans [0, L] x [-w/2, w/2] x [-h/2, h/2].");
+      prm.declare_entry("Width",
+                        "0.02",
+                        Patterns::Double(1e-5, 100),
+                        "Bar width along y [m], range [1e-5, 100].");
+      prm.declare_entry("Height",
+                        "0.02",
+                        Patterns::Double(1e-5, 100),
+                        "Bar height along z [m], range [1e-5, 100].");
+      prm.declare_entry("Cells",
+                        "50, 2, 2",
+                        Patterns::List(Patterns::Integer(1, 100000), 3, 3, ","),
+                        "Cells along x, y, z [-], each in [1, 100000].");
+      prm.declare_entry("Distortion",
+                        "0",
+                        Patterns::Double(0, 0.3),
+                        "Interior vertices are moved by this fraction of the "
+                        "cell size in a fixed pseudo-random direction [-], "
+                        "range [0, 0.3] (patch tests on distorted meshes).");
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  GeometryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.enter_subsection("Wheel");
+      wheel_radius                = prm.get_double("Radius");
+      bore_radius                 = prm.get_double("Bore radius");
+      tread_width                 = prm.get_double("Tread width");
+      wheel_centre_x              = prm.get_double("Centre x");
+      initial_gap                 = prm.get_double("Initial gap");
+      wheel_circumferential_cells = prm.get_integer("Circumferential cells");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Rail");
+      rail_head_height    = prm.get_double("Head height");
+      rail_head_width     = prm.get_double("Head width");
+      rail_profile_radius = prm.get_double("Profile radius");
+      rail_start_x        = prm.get_double("Start x");
+      rail_end_x          = prm.get_double("End x");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Mesh");
+      coarse_cell_size = prm.get_double("Coarse cell size");
+      h_min            = prm.get_double("Minimum cell size");
+      zone_length      = prm.get_double("Solution zone length");
+      zone_half_width  = prm.get_double("Solution zone half width");
+      zone_depth       = prm.get_double("Solution zone depth");
+      grading          = prm.get_double("Grading");
+      refine_wheel     = prm.get_bool("Refine wheel");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Bar");
+      bar_length = prm.get_double("Length");
+      bar_width  = prm.get_double("Width");
+      bar_height = prm.get_double("Height");
+      bar_cells.clear();
+      for (const int n : Utilities::string_to_int(
+             Utilities::split_string_list(prm.get("Cells"), ',')))
+        bar_cells.push_back(n);
+      bar_distortion = prm.get_double("Distortion");
+      prm.leave_subsection();
+    }
+    prm.leave_subsection();
+    check();
+  }
+
+
+
+  void
+  GeometryParameters::check() const
+  {
+    AssertThrow(bore_radius < 0.8 * wheel_radius,
+                ExcMessage("Geometry/Wheel/Bore radius (" +
+                           std::to_string(bore_radius) +
+                           " m) must be below 0.8 x Geometry/Wheel/Radius."));
+    AssertThrow(rail_end_x > rail_start_x,
+                ExcMessage("Geometry/Rail/End x must exceed Start x."));
+    AssertThrow(wheel_centre_x > rail_start_x && wheel_centre_x < rail_end_x,
+                ExcMessage("Geometry/Wheel/Centre x must lie between "
+                           "Geometry/Rail/Start x and End x."));
+    AssertThrow(rail_profile_radius > 0.5 * rail_head_width,
+                ExcMessage("Geometry/Rail/Profile radius must exceed half "
+                           "of Geometry/Rail/Head width."));
+    AssertThrow(h_min <= coarse_cell_size,
+                ExcMessage("Geometry/Mesh/Minimum cell size must not exceed "
+                           "Geometry/Mesh/Coarse cell size."));
+    AssertThrow(coarse_cell_size / h_min < 1025.,
+                ExcMessage("Geometry/Mesh/Coarse cell size / Minimum cell "
+                           "size exceeds 1024 (more than 10 refinement "
+                           "levels): choose a larger Minimum cell size."));
+    AssertThrow(zone_depth < rail_head_height,
+                ExcMessage("Geometry/Mesh/Solution zone depth must be below "
+                           "Geometry/Rail/Head height."));
+  }
+
+
+
+  double
+  MaterialParameters::wave_speed() const
+  {
+    return std::sqrt((lambda() + 2. * mu()) / density);
+  }
+
+
+
+  double
+  MaterialParameters::bar_wave_speed() const
+  {
+    return std::sqrt(youngs_modulus / density);
+  }
+
+
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("Young's modulus",
+                      "2.1e11",
+                      Patterns::Double(1e6, 1e13),
+                      "E of wheel and rail steel [Pa], range [1e6, 1e13].");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Patterns::Double(0, 0.49),
+                      "nu [-], range [0, 0.49].");
+    prm.declare_entry("Density",
+                      "7800",
+                      Patterns::Double(1, 1e5),
+                      "rho [kg/m^3], range [1, 1e5].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    youngs_modulus = prm.get_double("Young's modulus");
+    poisson_ratio  = prm.get_double("Poisson's ratio");
+    density        = prm.get_double("Density");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("End time",
+                      "1e-4",
+                      Patterns::Double(0, 10),
+                      "Simulated time of the explicit run [s], range [0, 10].");
+    prm.declare_entry("Time step",
+                      "0",
+                      Patterns::Double(0, 1e-2),
+                      "Time step of the central-difference scheme [s], range "
+                      "[0, 1e-2]; 0 = the stable step times the Courant "
+                      "factor. A value above the stable step is an error. "
+                      "The paper: 2.6e-8 s.");
+    prm.declare_entry("Courant factor",
+                      "0.9",
+                      Patterns::Double(0.01, 1.0),
+                      "C in dt = C min_e(L_e/c) (with the damping reduction) "
+                      "[-], range [0.01, 1].");
+    prm.declare_entry("Hourglass coefficient",
+                      "0.1",
+                      Patterns::Double(0, 1),
+                      "QM of the Flanagan-Belytschko stiffness hourglass "
+                      "control [-], range [0, 1]; 0 switches it off.");
+    prm.declare_entry("Damping model",
+                      "stiffness",
+                      Patterns::Selection("none|stiffness|Rayleigh"),
+                      "'stiffness': LS-DYNA part stiffness damping, "
+                      "beta_e = 2 COEF/omega_e per element (SPEC 2); "
+                      "'Rayleigh': classical C = beta K with beta in seconds; "
+                      "'none'.");
+    prm.declare_entry("Stiffness damping coefficient",
+                      "1e-4",
+                      Patterns::Double(0, 1),
+                      "COEF of the stiffness damping, a fraction of critical "
+                      "damping at each element's highest frequency [-], range "
+                      "[0, 1]. The paper: 1e-4.");
+    prm.declare_entry("Rayleigh beta",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "beta of Rayleigh damping C = beta K [s], range [0, 1]; "
+                      "used with Damping model = Rayleigh.");
+    prm.declare_entry("Gravity",
+                      "0, 0, -9.81",
+                      vector_pattern(),
+                      "Gravitational acceleration vector [m/s^2].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    end_time                      = prm.get_double("End time");
+    time_step                     = prm.get_double("Time step");
+    courant_factor                = prm.get_double("Courant factor");
+    hourglass_coefficient         = prm.get_double("Hourglass coefficient");
+    damping_model                 = prm.get("Damping model");
+    stiffness_damping_coefficient = prm.get_double("Stiffness damping coefficient");
+    rayleigh_beta                 = prm.get_double("Rayleigh beta");
+    gravity                       = get_vector(prm, "Gravity");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  BoundaryParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    prm.declare_entry(
+      "Fixed boundaries",
+      "11: xyz, 12: x",
+      Patterns::Map(Patterns::Integer(0, 255),
+                    Patterns::Selection("x|y|z|xy|xz|yz|xyz"),
+                    0,
+                    Patterns::Map::max_int_value,
+                    ",",
+                    ":"),
+      "Boundary ids and the displacement components held at zero, e.g. "
+      "'11: xyz, 12: x' (rail bottom fixed, rail ends fixed in x). Boundary "
+      "ids are listed in the README.");
+    prm.declare_entry("Prescribed velocity boundaries",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids whose nodes move with the velocity "
+                      "function below (all three components).");
+    prm.declare_entry("Prescribed velocity",
+                      "0; 0; 0",
+                      Patterns::Anything(),
+                      "Velocity of the prescribed boundaries [m/s]: three "
+                      "muparser expressions 'vx; vy; vz' in x, y, z (reference "
+                      "position, m) and t (s).");
+    prm.declare_entry("Prescribed velocity constants",
+                      "",
+                      Patterns::Anything(),
+                      "Constants for the expression, 'name=value, ...'.");
+    prm.declare_entry("Wheel bore",
+                      "spinning axle",
+                      Patterns::Selection("free|fixed|spinning axle"),
+                      "Motion of the bore nodes (boundary id 2): 'fixed'; "
+                      "'spinning axle': rigid rotation about the fixed axle "
+                      "with Initial conditions/Wheel angular velocity; 'free'.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  BoundaryParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Boundary conditions");
+    fixed.clear();
+    for (const auto &entry :
+         Utilities::split_string_list(prm.get("Fixed boundaries"), ','))
+      {
+        const auto kv = Utilities::split_string_list(entry, ':');
+        fixed[Utilities::string_to_int(kv[0])] = kv[1];
+      }
+    prescribed_velocity_ids.clear();
+    for (const int id : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Prescribed velocity boundaries"))))
+      prescribed_velocity_ids.push_back(id);
+    prescribed_velocity_expression = prm.get("Prescribed velocity");
+    prescribed_velocity_constants  = prm.get("Prescribed velocity constants");
+    wheel_bore                     = prm.get("Wheel bore");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  InitialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    prm.declare_entry("Wheel velocity",
+                      "0, 0, 0",
+                      vector_pattern(),
+                      "Initial translational velocity of the wheel [m/s].");
+    prm.declare_entry("Wheel angular velocity",
+                      "0",
+                      Patterns::Double(-1e4, 1e4),
+                      "Initial angular velocity of the wheel about +y "
+                      "through its centre [rad/s], range [-1e4, 1e4]; "
+                      "rolling towards +x is negative: -V/R_w.");
+    prm.declare_entry("Velocity function",
+                      "0; 0; 0",
+                      Patterns::Anything(),
+                      "Additional initial velocity of every node [m/s]: three "
+                      "muparser expressions 'vx; vy; vz' in x, y, z (m).");
+    prm.declare_entry("Velocity function constants",
+                      "",
+                      Patterns::Anything(),
+                      "Constants for the expression, 'name=value, ...'.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  InitialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Initial conditions");
+    wheel_velocity         = get_vector(prm, "Wheel velocity");
+    wheel_angular_velocity = prm.get_double("Wheel angular velocity");
+    velocity_expression    = prm.get("Velocity function");
+    velocity_constants     = prm.get("Velocity function constants");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Report interval",
+                      "1000",
+                      Patterns::Integer(1, 1000000000),
+                      "Steps between screen reports of time and energies "
+                      "[-], range [1, 1e9].");
+    prm.declare_entry("Statistics interval",
+                      "100",
+                      Patterns::Integer(1, 1000000000),
+                      "Steps between rows of the statistics file [-], range "
+                      "[1, 1e9].");
+    prm.declare_entry("VTU interval",
+                      "0",
+                      Patterns::Integer(0, 1000000000),
+                      "Steps between VTU/PVTU snapshots [-], range [0, 1e9]; "
+                      "0 = first and last step only.");
+    prm.declare_entry("Probe point",
+                      "0, 0, 0",
+                      vector_pattern(),
+                      "A velocity history is recorded at the node nearest "
+                      "to this point [m] (file probe.csv).");
+    prm.declare_entry("Probe component",
+                      "0",
+                      Patterns::Integer(0, 2),
+                      "Component (0 = x, 1 = y, 2 = z) used by the "
+                      "verification checks on the probe [-].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    report_interval     = prm.get_integer("Report interval");
+    statistics_interval = prm.get_integer("Statistics interval");
+    vtu_interval        = prm.get_integer("VTU interval");
+    probe_point         = Point<3>(get_vector(prm, "Probe point"));
+    probe_component     = prm.get_integer("Probe component");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  VerificationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    prm.declare_entry(
+      "Check",
+      "none",
+      Patterns::Selection(
+        "none|wave arrival|longitudinal frequency|bending frequency|energy balance"),
+      "Analytic comparison made at the end of an explicit run on the bar: "
+      "'wave arrival': first time the probe velocity exceeds Wave threshold "
+      "times the far-end steady value, against L/sqrt(E/rho); "
+      "'longitudinal frequency': frequency of the probe displacement "
+      "(zero crossings) against sqrt(E/rho)/(2L) (free-free) or /(4L) "
+      "(clamped); 'bending frequency': against the Euler-Bernoulli "
+      "cantilever 1.8751^2/(2 pi L^2) sqrt(EI/(rho A)); this check also "
+      "compares the hourglass energy ratio with Hourglass limit; 'energy balance': "
+      "the largest relative energy balance error of the run against Tolerance.");
+    prm.declare_entry("Displacement gradient",
+                      "1e-3, 2e-4, -3e-4, 5e-4, -1e-3, 2e-4, 1e-4, 3e-4, 2e-3",
+                      Patterns::List(Patterns::Double(-1, 1), 9, 9, ","),
+                      "G of the patch test, row by row (G_xx, G_xy, ..., "
+                      "G_zz) [-], each in [-1, 1].");
+    prm.declare_entry("Rotation angle",
+                      "30",
+                      Patterns::Double(-360, 360),
+                      "Angle of the rigid rotation [degrees], range "
+                      "[-360, 360].");
+    prm.declare_entry("Rotation axis",
+                      "0, 1, 0",
+                      vector_pattern(),
+                      "Direction of the rotation axis (normalised; through "
+                      "the wheel centre, or the bar centre) [-].");
+    prm.declare_entry("Tolerance",
+                      "0.02",
+                      Patterns::Double(0, 1),
+                      "Relative tolerance of the check [-], range [0, 1].");
+    prm.declare_entry("Wave threshold",
+                      "0.5",
+                      Patterns::Double(0.01, 0.99),
+                      "Fraction of the far-end steady velocity that marks "
+                      "the arrival of the front [-], range [0.01, 0.99].");
+    prm.declare_entry("Hourglass limit",
+                      "0.1",
+                      Patterns::Double(0, 10),
+                      "Largest accepted ratio of hourglass-mode energy to "
+                      "internal energy [-], range [0, 10].");
+    prm.declare_entry("Clamped",
+                      "false",
+                      Patterns::Bool(),
+                      "The bar is clamped at x = 0 (boundary id 21) in the "
+                      "longitudinal frequency check.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  VerificationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    check = prm.get("Check");
+    const auto g = Utilities::string_to_double(
+      Utilities::split_string_list(prm.get("Displacement gradient"), ','));
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = 0; j < 3; ++j)
+        displacement_gradient[i][j] = g[3 * i + j];
+    rotation_angle = prm.get_double("Rotation angle") * M_PI / 180.;
+    rotation_axis  = get_vector(prm, "Rotation axis");
+    AssertThrow(rotation_axis.norm() > 0,
+                ExcMessage("Verification/Rotation axis must not be zero."));
+    rotation_axis /= rotation_axis.norm();
+    tolerance       = prm.get_double("Tolerance");
+    wave_threshold  = prm.get_double("Wave threshold");
+    hourglass_limit = prm.get_double("Hourglass limit");
+    bar_clamped     = prm.get_bool("Clamped");
+    prm.leave_subsection();
+  }
+
+
+
+  std::unique_ptr<FunctionParser<3>>
+  make_vector_function(const std::string &expression,
+                       const std::string &constants_text,
+                       const std::string &variables,
+                       const std::string &entry)
+  {
+    std::map<std::string, double> constants = {{"pi", M_PI}};
+    for (const auto &c : Utilities::split_string_list(constants_text))
+      {
+        const auto kv = Utilities::split_string_list(c, '=');
+        AssertThrow(kv.size() == 2,
+                    ExcMessage(entry + " constants: cannot read '" + c + "' as name=value."));
+        try
+          {
+            constants[kv[0]] = Utilities::string_to_double(kv[1]);
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage(entry + " constants: '" + kv[1] + "' is not a number."));
+          }
+      }
+    const auto components = Utilities::split_string_list(expression, ';');
+    AssertThrow(components.size() == 3,
+                ExcMessage(entry + " = '" + expression +
+                           "' must have three expressions separated by ';'."));
+    auto function = std::make_unique<FunctionParser<3>>(3);
+    try
+      {
+        function->initialize(variables, components, constants, variables.find('t') != std::string::npos);
+        for (unsigned int d = 0; d < 3; ++d)
+          AssertThrow(std::isfinite(function->value(Point<3>(), d)), ExcMessage("not finite at 0"));
+      }
+    catch (const ExceptionBase &e)
+      {
+        AssertThrow(false,
+                    ExcMessage(entry + " = '" + expression + "' cannot be evaluated (variables " +
+                               variables + "; constants pi and " +
+                               (constants_text.empty() ? std::string("none") : constants_text) +
+                               ")."));
+      }
+    return function;
+  }
+
+
+
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    ProblemParameters::declare_parameters(prm);
+    GeometryParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    BoundaryParameters::declare_parameters(prm);
+    InitialParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    VerificationParameters::declare_parameters(prm);
+  }
+
+
+
+  void
+  Parameters::parse(ParameterHandler &prm, const std::string &filename)
+  {
+    {
+      std::ifstream in(filename);
+      AssertThrow(in.good(),
+                  ExcMessage("Cannot open the parameter file '" + filename +
+                             "'."));
+    }
+    prm.parse_input(filename);
+    problem.parse_parameters(prm);
+    geometry.parse_parameters(prm);
+    material.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    boundary.parse_parameters(prm);
+    initial.parse_parameters(prm);
+    output.parse_parameters(prm);
+    verification.parse_parameters(prm);
+    // validate the expressions now, so that a typo stops the run at once
+    make_vector_function(initial.velocity_expression,
+                         initial.velocity_constants,
+                         "x,y,z",
+                         "Initial conditions/Velocity function");
+    make_vector_function(boundary.prescribed_velocity_expression,
+                         boundary.prescribed_velocity_constants,
+                         "x,y,z,t",
+                         "Boundary conditions/Prescribed velocity");
+  }
+} // namespace WheelRail

@@ -1,0 +1,694 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <wheelrail/geometry.h>
+#include <wheelrail/simulator.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace WheelRail
+{
+  namespace
+  {
+    /** Fixed-width number for reports: @p digits significant digits. */
+    std::string
+    fmt(const double x, const unsigned int digits = 6)
+    {
+      std::ostringstream s;
+      s << std::setprecision(digits) << x;
+      return s.str();
+    }
+
+    /** Rotation matrix for angle @p angle about the unit vector @p axis. */
+    Tensor<2, dim>
+    rotation_matrix(const Tensor<1, dim> &axis, const double angle)
+    {
+      const double   c = std::cos(angle), s = std::sin(angle);
+      Tensor<2, dim> R;
+      for (unsigned int i = 0; i < dim; ++i)
+        for (unsigned int j = 0; j < dim; ++j)
+          R[i][j] = (i == j ? c : 0.) + (1 - c) * axis[i] * axis[j];
+      R[0][1] -= s * axis[2];
+      R[0][2] += s * axis[1];
+      R[1][0] += s * axis[2];
+      R[1][2] -= s * axis[0];
+      R[2][0] -= s * axis[1];
+      R[2][1] += s * axis[0];
+      return R;
+    }
+
+    /**
+     * Mean period from the zero crossings of the signal s(t) (linear
+     * interpolation between samples); 0 if fewer than three crossings.
+     */
+    double
+    mean_period(const std::vector<double> &t, const std::vector<double> &s)
+    {
+      std::vector<double> crossings;
+      for (unsigned int i = 1; i < s.size(); ++i)
+        if ((s[i - 1] < 0 && s[i] >= 0) || (s[i - 1] > 0 && s[i] <= 0))
+          crossings.push_back(t[i - 1] + (t[i] - t[i - 1]) * s[i - 1] / (s[i - 1] - s[i]));
+      if (crossings.size() < 3)
+        return 0;
+      return 2. * (crossings.back() - crossings.front()) / (crossings.size() - 1);
+    }
+  } // namespace
+
+
+
+  Simulator::Simulator(const Parameters &      parameters,
+                       const ParameterHandler &prm,
+                       MPI_Comm                comm)
+    : parameters(parameters)
+    , mpi_communicator(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , triangulation(comm)
+    , output_directory(parameters.problem.output_directory)
+  {
+    prepare_output_directory(prm);
+  }
+
+
+
+  void
+  Simulator::write_file(const std::string &name, const std::string &content) const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    const std::string path = output_directory + "/" + name;
+    const std::string tmp  = path + ".tmp";
+    {
+      std::ofstream out(tmp);
+      out << content;
+      out.flush();
+      AssertThrow(out.good(),
+                  ExcMessage("Cannot write '" + tmp + "' (disk full or no permission)."));
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    AssertThrow(!ec, ExcMessage("Cannot rename '" + tmp + "' to '" + path + "': " + ec.message()));
+  }
+
+
+
+  void
+  Simulator::prepare_output_directory(const ParameterHandler &prm) const
+  {
+    int ok = 1;
+    std::string message;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(output_directory, ec);
+        if (ec)
+          {
+            ok      = 0;
+            message = ec.message();
+          }
+      }
+    ok = Utilities::MPI::min(ok, mpi_communicator);
+    AssertThrow(ok,
+                ExcMessage("Cannot create Problem/Output directory '" + output_directory +
+                           "': " + message));
+    std::ostringstream parsed;
+    prm.print_parameters(parsed, ParameterHandler::PRM);
+    write_file("parameters.prm", parsed.str());
+  }
+
+
+
+  void
+  Simulator::run()
+  {
+    pcout << "wheelrail: geometry '" << parameters.problem.geometry << "', mode '"
+          << parameters.problem.mode << "'";
+    if (!parameters.problem.test_mode)
+      pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator) << " MPI rank(s)";
+    pcout << std::endl;
+
+    Geometry::build(parameters.geometry, parameters.problem.geometry, triangulation);
+    solver = std::make_unique<ExplicitSolver>(parameters, triangulation);
+    solver->setup();
+
+    if (parameters.solver.time_step > 0)
+      {
+        AssertThrow(parameters.solver.time_step <= solver->stable_time_step() * (1 + 1e-12),
+                    ExcMessage("Time integration/Time step = " + fmt(parameters.solver.time_step) +
+                               " s exceeds the stable step " + fmt(solver->stable_time_step()) +
+                               " s (Courant factor x min L_e/c with the damping reduction): "
+                               "the explicit run would blow up. Reduce the time step, or "
+                               "coarsen Geometry/Mesh/Minimum cell size."));
+        solver->set_time_step(parameters.solver.time_step);
+      }
+    else
+      solver->set_time_step(solver->stable_time_step());
+
+    print_setup_summary();
+    if (parameters.problem.dry_run)
+      {
+        pcout << "Dry run: stopping after the setup." << std::endl;
+        return;
+      }
+    if (parameters.problem.mode == "explicit dynamics")
+      run_explicit();
+    else
+      run_static_check();
+  }
+
+
+
+  void
+  Simulator::print_setup_summary()
+  {
+    const MeshQuality &q = solver->mesh_quality();
+    const double       c = parameters.material.wave_speed();
+    pcout << "Mesh" << std::endl
+          << "  cells                        : " << triangulation.n_global_active_cells() << std::endl
+          << "  DoFs                         : " << solver->get_dof_handler().n_dofs() << std::endl
+          << "  h_min (smallest cell size)   : " << fmt(q.min_longest_edge * 1e3) << " mm" << std::endl
+          << "  shortest edge                : " << fmt(q.min_edge * 1e3) << " mm" << std::endl
+          << "  smallest L_e = V/A_max       : " << fmt(q.min_length * 1e3) << " mm" << std::endl
+          << "  smallest scaled Jacobian     : " << fmt(q.min_scaled_jacobian, 4) << std::endl
+          << "  largest aspect ratio         : " << fmt(q.max_aspect_ratio, 4) << std::endl;
+
+    pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
+    std::vector<std::pair<types::material_id, std::string>> bodies;
+    if (parameters.problem.geometry == "bar")
+      bodies = {{Geometry::MaterialIds::bar, "bar"}};
+    else
+      bodies = {{Geometry::MaterialIds::wheel, "wheel"}, {Geometry::MaterialIds::rail, "rail"}};
+    const double rho = parameters.material.density;
+    for (const auto &body : bodies)
+      {
+        const double m      = solver->total_mass(body.first);
+        const double m_mesh = rho * solver->mesh_volume(body.first);
+        const double m_true = rho * Geometry::exact_volume(parameters.geometry, body.first);
+        pcout << "  " << std::left << std::setw(6) << body.second << std::right
+              << " lumped mass " << fmt(m, 8) << " kg, rho x mesh volume "
+              << fmt(m_mesh, 8) << " kg (rel. error " << fmt(std::abs(m - m_mesh) / m_mesh, 1)
+              << "), rho x exact volume " << fmt(m_true, 8) << " kg (rel. error "
+              << fmt(std::abs(m - m_true) / m_true, 3) << ")" << std::endl;
+      }
+
+    const double dt = solver->time_step();
+    pcout << "Time integration" << std::endl
+          << "  dilatational wave speed c    : " << fmt(c) << " m/s" << std::endl
+          << "  stable step (Courant "
+          << fmt(parameters.solver.courant_factor, 3) << ")     : " << fmt(solver->stable_time_step() * 1e6)
+          << " us" << std::endl
+          << "  step used                    : " << fmt(dt * 1e6) << " us" << std::endl
+          << "  Courant number c dt / L_e    : " << fmt(c * dt / q.min_length, 4) << std::endl
+          << "  hourglass coefficient QM     : " << fmt(parameters.solver.hourglass_coefficient)
+          << std::endl
+          << "  damping                      : " << parameters.solver.damping_model;
+    if (parameters.solver.damping_model == "stiffness")
+      pcout << " (COEF " << fmt(parameters.solver.stiffness_damping_coefficient) << ")";
+    else if (parameters.solver.damping_model == "Rayleigh")
+      pcout << " (beta " << fmt(parameters.solver.rayleigh_beta) << " s)";
+    pcout << std::endl;
+    if (parameters.problem.mode == "explicit dynamics")
+      pcout << "  steps                        : "
+            << static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9))
+            << " to t = " << fmt(parameters.solver.end_time * 1e3) << " ms" << std::endl;
+  }
+
+
+
+  void
+  Simulator::run_static_check()
+  {
+    const VerificationParameters &vp = parameters.verification;
+    const bool                    bar = parameters.problem.geometry == "bar";
+    const double                  E   = parameters.material.youngs_modulus;
+    VectorType                    force;
+
+    if (parameters.problem.mode == "patch test")
+      {
+        const Tensor<2, dim> G = vp.displacement_gradient;
+        solver->set_displacement([&](const Point<dim> &X) { return G * X; });
+        solver->compute_internal_force(force);
+        const Tensor<2, dim> F   = unit_symmetric_tensor<dim>() + G;
+        const Tensor<2, dim> Ex  = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
+        const Tensor<2, dim> Sx  = parameters.material.lambda() * trace(Ex) *
+                                    Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
+                                  2. * parameters.material.mu() * Ex;
+        double max_stress_error = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              const auto &s = solver->cell_stresses()[cell->active_cell_index()];
+              max_stress_error =
+                std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
+            }
+        max_stress_error = Utilities::MPI::max(max_stress_error, mpi_communicator);
+        double max_interior = 0, max_boundary = 0;
+        for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+          (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
+            std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
+                     std::abs(force.local_element(i)));
+        max_interior = Utilities::MPI::max(max_interior, mpi_communicator);
+        max_boundary = Utilities::MPI::max(max_boundary, mpi_communicator);
+        const double tol = 1e-10;
+        pcout << "Patch test: u = G X on every node" << std::endl
+              << "  exact 2nd Piola-Kirchhoff stress |S| : " << fmt(Sx.norm() * 1e-6) << " MPa"
+              << std::endl
+              << "  S_xx, S_yy, S_zz, S_xy, S_yz, S_xz   : " << fmt(Sx[0][0] * 1e-6) << " "
+              << fmt(Sx[1][1] * 1e-6) << " " << fmt(Sx[2][2] * 1e-6) << " " << fmt(Sx[0][1] * 1e-6)
+              << " " << fmt(Sx[1][2] * 1e-6) << " " << fmt(Sx[0][2] * 1e-6) << " MPa" << std::endl
+              << "  largest cell stress error / |S|      : " << fmt(max_stress_error, 1)
+              << std::endl
+              << "  largest interior nodal force / largest boundary nodal force : "
+              << fmt(max_interior / max_boundary, 1) << std::endl
+              << "  both within " << fmt(tol) << "                : "
+              << (max_stress_error < tol && max_interior / max_boundary < tol ? "yes" : "no")
+              << std::endl;
+        return;
+      }
+
+    // rigid rotation of the wheel (or the bar) about its centre
+    const Point<dim> centre =
+      bar ? Point<dim>(0.5 * parameters.geometry.bar_length, 0, 0) :
+            Geometry::wheel_centre(parameters.geometry);
+    const Tensor<2, dim> R = rotation_matrix(vp.rotation_axis, vp.rotation_angle);
+    solver->set_displacement(
+      [&](const Point<dim> &X) {
+        const Tensor<1, dim> r = X - centre;
+        return R * r - r;
+      },
+      bar ? Geometry::MaterialIds::bar : Geometry::MaterialIds::wheel);
+    solver->compute_internal_force(force);
+    double max_vm = 0;
+    const auto stresses = solver->cell_stresses();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        max_vm = std::max(max_vm, stresses[cell->active_cell_index()].von_mises);
+    max_vm                 = Utilities::MPI::max(max_vm, mpi_communicator);
+    const double max_force = Utilities::MPI::max(force.linfty_norm(), mpi_communicator);
+    const double h         = solver->mesh_quality().min_longest_edge;
+    // force scale: E h^2 times the size of the displacement gradient
+    const double scale = E * h * h * (R - unit_symmetric_tensor<dim>()).norm();
+    const double tol   = 1e-10;
+    pcout << "Rigid rotation by " << fmt(vp.rotation_angle * 180 / M_PI) << " degrees about ("
+          << fmt(vp.rotation_axis[0], 4) << ", " << fmt(vp.rotation_axis[1], 4) << ", "
+          << fmt(vp.rotation_axis[2], 4) << ")" << std::endl
+          << "  largest von Mises stress / E                : " << fmt(max_vm / E, 1) << std::endl
+          << "  largest nodal force / (E h_min^2 |R - I|)   : " << fmt(max_force / scale, 1)
+          << std::endl
+          << "  both within " << fmt(tol) << "                      : "
+          << (max_vm / E < tol && max_force / scale < tol ? "yes" : "no") << std::endl;
+  }
+
+
+
+  void
+  Simulator::apply_initial_conditions()
+  {
+    const InitialParameters &ip = parameters.initial;
+    const auto extra = make_vector_function(ip.velocity_expression,
+                                            ip.velocity_constants,
+                                            "x,y,z",
+                                            "Initial conditions/Velocity function");
+    const Point<dim> centre = Geometry::wheel_centre(parameters.geometry);
+    solver->set_velocity([&](const Point<dim> &X, const types::material_id material) {
+      Tensor<1, dim> v;
+      for (unsigned int d = 0; d < dim; ++d)
+        v[d] = extra->value(X, d);
+      if (material == Geometry::MaterialIds::wheel)
+        {
+          const Tensor<1, dim> r = X - centre;
+          // omega e_y x r
+          v += ip.wheel_velocity +
+               ip.wheel_angular_velocity * Tensor<1, dim>({r[2], 0., -r[0]});
+        }
+      return v;
+    });
+  }
+
+
+
+  void
+  Simulator::setup_probe()
+  {
+    const auto &      points = solver->support_points();
+    const auto &      part   = *solver->partitioner();
+    std::array<double, 4> best = {{std::numeric_limits<double>::max(), 0, 0, 0}};
+    unsigned int          best_dof = 0;
+    for (unsigned int i = 0; i < part.locally_owned_size(); ++i)
+      {
+        const double d = points[i].distance(parameters.output.probe_point);
+        // the x-DoF of a vertex is the first of its three
+        if (i > 0 && points[i - 1] == points[i])
+          continue;
+        const std::array<double, 4> candidate = {{d, points[i][0], points[i][1], points[i][2]}};
+        if (candidate < best)
+          {
+            best     = candidate;
+            best_dof = i;
+          }
+      }
+    const auto all = Utilities::MPI::all_gather(mpi_communicator, best);
+    probe_owner    = std::min_element(all.begin(), all.end()) - all.begin();
+    probe_location = Point<dim>(all[probe_owner][1], all[probe_owner][2], all[probe_owner][3]);
+    probe_dof      = best_dof;
+  }
+
+
+
+  void
+  Simulator::record_probe()
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != probe_owner)
+      return;
+    probe_history.push_back(solver->time());
+    for (unsigned int d = 0; d < dim; ++d)
+      probe_history.push_back(solver->displacement().local_element(probe_dof + d));
+    for (unsigned int d = 0; d < dim; ++d)
+      probe_history.push_back(solver->velocity().local_element(probe_dof + d));
+  }
+
+
+
+  void
+  Simulator::add_statistics_row(const Energies &e)
+  {
+    const double scale = std::max({std::abs(initial_energies.total()),
+                                   e.kinetic + e.internal + e.hourglass + e.damping,
+                                   std::abs(e.external_work),
+                                   1e-300});
+    const double balance = e.total() - initial_energies.total();
+    max_balance_error    = std::max(max_balance_error, std::abs(balance) / scale);
+
+    statistics.add_value("step", static_cast<unsigned int>(e.step));
+    statistics.add_value("time [s]", e.time);
+    if (parameters.problem.geometry != "bar")
+      {
+        const Tensor<1, dim> ub = solver->bore_displacement();
+        const Point<dim>     c  = Geometry::wheel_centre(parameters.geometry);
+        statistics.add_value("wheel x [m]", c[0] + ub[0]);
+        statistics.add_value("axle z [m]", c[2] + ub[2]);
+      }
+    statistics.add_value("kinetic [J]", e.kinetic);
+    statistics.add_value("internal [J]", e.internal);
+    statistics.add_value("hourglass [J]", e.hourglass);
+    statistics.add_value("damping dissipation [J]", e.damping);
+    statistics.add_value("external work [J]", e.external_work);
+    statistics.add_value("balance [J]", balance);
+    statistics.add_value("balance error [-]", std::abs(balance) / scale);
+    for (const auto &key : {"time [s]",
+                            "wheel x [m]",
+                            "axle z [m]",
+                            "kinetic [J]",
+                            "internal [J]",
+                            "hourglass [J]",
+                            "damping dissipation [J]",
+                            "external work [J]",
+                            "balance [J]",
+                            "balance error [-]"})
+      {
+        statistics.set_scientific(key, true);
+        statistics.set_precision(key, 8);
+      }
+  }
+
+
+
+  void
+  Simulator::write_statistics() const
+  {
+    std::ostringstream out;
+    out << "# wheelrail statistics: SI units; energies of the whole model; balance = "
+           "kinetic + internal + hourglass + damping - external work - its initial value\n";
+    statistics.write_text(out, TableHandler::table_with_separate_column_description);
+    write_file("statistics", out.str());
+  }
+
+
+
+  void
+  Simulator::write_probe() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != probe_owner)
+      return;
+    std::ostringstream out;
+    out << "# probe node at (" << probe_location << ") m\n"
+        << "t [s],u_x [m],u_y [m],u_z [m],v_x [m/s],v_y [m/s],v_z [m/s]\n"
+        << std::setprecision(10);
+    for (unsigned int i = 0; i < probe_history.size(); i += 7)
+      {
+        for (unsigned int k = 0; k < 7; ++k)
+          out << (k ? "," : "") << probe_history[i + k];
+        out << '\n';
+      }
+    // written by the owner rank: not through write_file (rank 0 only)
+    const std::string path = output_directory + "/probe.csv";
+    {
+      std::ofstream file(path + ".tmp");
+      file << out.str();
+      file.flush();
+      AssertThrow(file.good(), ExcMessage("Cannot write '" + path + ".tmp'."));
+    }
+    std::filesystem::rename(path + ".tmp", path);
+  }
+
+
+
+  void
+  Simulator::write_vtu()
+  {
+    const auto   stresses = solver->cell_stresses();
+    Vector<float> von_mises(triangulation.n_active_cells());
+    Vector<float> material(triangulation.n_active_cells());
+    Vector<float> rank(triangulation.n_active_cells());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          von_mises[cell->active_cell_index()] = stresses[cell->active_cell_index()].von_mises;
+          material[cell->active_cell_index()]  = cell->material_id();
+          rank[cell->active_cell_index()]      = triangulation.locally_owned_subdomain();
+        }
+    DataOut<dim> data_out;
+    data_out.attach_dof_handler(solver->get_dof_handler());
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_type(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.add_data_vector(solver->displacement(),
+                             std::vector<std::string>(dim, "displacement"),
+                             DataOut<dim>::type_dof_data,
+                             vector_type);
+    data_out.add_data_vector(solver->velocity(),
+                             std::vector<std::string>(dim, "velocity"),
+                             DataOut<dim>::type_dof_data,
+                             vector_type);
+    data_out.add_data_vector(von_mises, "von_mises_Pa", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(material, "material_id", DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);
+    data_out.build_patches();
+    const std::string name = data_out.write_vtu_with_pvtu_record(
+      output_directory + "/", "solution", vtu_counter++, mpi_communicator, 5);
+    vtu_records.emplace_back(solver->time(), name);
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, vtu_records);
+    write_file("solution.pvd", pvd.str());
+  }
+
+
+
+  void
+  Simulator::report(const Energies &e, const double wall_seconds)
+  {
+    pcout << "step " << std::setw(8) << e.step << "  t = " << std::setw(10) << fmt(e.time * 1e3) << " ms  E_kin " << fmt(e.kinetic) << " J  E_int "
+          << fmt(e.internal) << " J  E_hg " << fmt(e.hourglass, 3) << " J  D " << fmt(e.damping, 3)
+          << " J  W_ext " << fmt(e.external_work) << " J  balance error "
+          << fmt(max_balance_error, 2);
+    if (!parameters.problem.test_mode)
+      pcout << "  [" << fmt(wall_seconds, 3) << " s]";
+    pcout << std::endl;
+  }
+
+
+
+  void
+  Simulator::run_explicit()
+  {
+    apply_initial_conditions();
+    setup_probe();
+    const double        dt      = solver->time_step();
+    const unsigned long n_steps =
+      static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9));
+    const OutputParameters &op   = parameters.output;
+    const bool              test = parameters.problem.test_mode;
+    pcout << "Probe node at (" << fmt(probe_location[0] * 1e3) << ", "
+          << fmt(probe_location[1] * 1e3) << ", " << fmt(probe_location[2] * 1e3) << ") mm"
+          << std::endl;
+
+    Timer timer(mpi_communicator, true);
+    if (!test)
+      write_vtu();
+    record_probe();
+    for (unsigned long n = 0; n < n_steps; ++n)
+      {
+        const bool report_step = (n % op.report_interval == 0);
+        const bool stats_step  = (n % op.statistics_interval == 0) || report_step;
+        Energies   e;
+        solver->step(stats_step ? &e : nullptr);
+        record_probe();
+        if (stats_step)
+          {
+            const double wall = timer.wall_time();
+            if (!std::isfinite(e.kinetic) || !std::isfinite(e.internal))
+              {
+                write_statistics();
+                write_probe();
+                AssertThrow(false,
+                            ExcMessage("The solution diverged (NaN or infinite energy) at step " +
+                                       std::to_string(n) + ", t = " + fmt(n * dt) +
+                                       " s. Likely cause: a time step above the stable limit "
+                                       "(step used " + fmt(dt) + " s, stable " +
+                                       fmt(solver->stable_time_step()) +
+                                       " s), or an unconstrained body."));
+              }
+            if (!have_initial_energies)
+              {
+                initial_energies      = e;
+                have_initial_energies = true;
+              }
+            add_statistics_row(e);
+            internal_time_integral += e.internal;
+            hourglass_time_integral += e.hourglass;
+            hourglass_ref_time_integral += e.hourglass_reference;
+            if (report_step)
+              {
+                report(e, wall);
+                write_statistics();
+              }
+          }
+        if (!test && op.vtu_interval > 0 && (n + 1) % op.vtu_interval == 0 && n + 1 < n_steps)
+          write_vtu();
+      }
+    write_statistics();
+    write_probe();
+    if (!test)
+      write_vtu();
+    timer.stop();
+
+    pcout << "Explicit run finished: " << n_steps << " steps to t = " << fmt(solver->time() * 1e3)
+          << " ms; largest energy balance error " << fmt(max_balance_error, 2) << std::endl;
+    if (!test)
+      {
+        const double cells = triangulation.n_global_active_cells();
+        pcout << "  wall time " << fmt(timer.wall_time(), 4) << " s, "
+              << fmt(timer.wall_time() / (cells * n_steps) * 1e9 *
+                       Utilities::MPI::n_mpi_processes(mpi_communicator),
+                     4)
+              << " ns per element-step per rank (" << fmt(timer.wall_time() / (cells * n_steps) * 1e9, 4)
+              << " ns wall)" << std::endl
+              << "  results in " << output_directory
+              << "/ (solution.pvd, statistics, probe.csv, parameters.prm)" << std::endl;
+      }
+    final_checks();
+  }
+
+
+
+  void
+  Simulator::final_checks()
+  {
+    const VerificationParameters &vp = parameters.verification;
+    if (vp.check == "none")
+      return;
+
+    // the probe history lives on its owner: bring it to every rank
+    std::vector<double> history =
+      Utilities::MPI::broadcast(mpi_communicator, probe_history, probe_owner);
+    const unsigned int  comp = parameters.output.probe_component;
+    std::vector<double> t, u, v;
+    for (unsigned int i = 0; i < history.size(); i += 7)
+      {
+        t.push_back(history[i]);
+        u.push_back(history[i + 1 + comp]);
+        v.push_back(history[i + 4 + comp]);
+      }
+    const GeometryParameters &g   = parameters.geometry;
+    const double              c0  = parameters.material.bar_wave_speed();
+    const double              tol = vp.tolerance;
+    const auto result = [&](const std::string &what,
+                            const double       measured,
+                            const double       reference,
+                            const std::string &unit,
+                            const double       scale) {
+      const double error = std::abs(measured - reference) / std::abs(reference);
+      pcout << "Check: " << what << std::endl
+            << "  measured  : " << fmt(measured * scale) << " " << unit << std::endl
+            << "  reference : " << fmt(reference * scale) << " " << unit << std::endl
+            << "  relative error " << fmt(error, 2) << ", tolerance " << fmt(tol)
+            << ", within tolerance: " << (error <= tol ? "yes" : "no") << std::endl;
+    };
+
+    if (vp.check == "wave arrival")
+      {
+        const auto vfun = make_vector_function(parameters.boundary.prescribed_velocity_expression,
+                                               parameters.boundary.prescribed_velocity_constants,
+                                               "x,y,z,t",
+                                               "Boundary conditions/Prescribed velocity");
+        vfun->set_time(parameters.solver.end_time);
+        const double v0        = vfun->value(Point<dim>(), comp);
+        const double threshold = vp.wave_threshold * 2. * v0; // free far end doubles
+        double       arrival   = 0;
+        for (unsigned int i = 1; i < v.size(); ++i)
+          if (v[i] / threshold >= 1.)
+            {
+              arrival = t[i - 1] + (t[i] - t[i - 1]) * (threshold - v[i - 1]) / (v[i] - v[i - 1]);
+              break;
+            }
+        result("arrival of the front at the probe (bar wave speed sqrt(E/rho))",
+               arrival,
+               (probe_location[0] - 0.) / c0,
+               "us",
+               1e6);
+      }
+    else if (vp.check == "longitudinal frequency")
+      result(std::string("first longitudinal frequency, ") +
+               (vp.bar_clamped ? "clamped-free" : "free-free") + " bar",
+             1. / mean_period(t, u),
+             c0 / ((vp.bar_clamped ? 4. : 2.) * g.bar_length),
+             "Hz",
+             1.);
+    else if (vp.check == "bending frequency")
+      {
+        const double beta_L = 1.8751040687;
+        const double f_ref  = beta_L * beta_L / (2 * M_PI * g.bar_length * g.bar_length) *
+                             std::sqrt(parameters.material.youngs_modulus * g.bar_height *
+                                       g.bar_height / (12. * parameters.material.density));
+        result("first bending frequency of the cantilever (Euler-Bernoulli)",
+               1. / mean_period(t, u),
+               f_ref,
+               "Hz",
+               1.);
+        const double ratio_ref = hourglass_ref_time_integral / internal_time_integral;
+        const double ratio     = hourglass_time_integral / internal_time_integral;
+        pcout << "Check: hourglass modes" << std::endl
+              << "  hourglass energy / internal energy (time mean)          : " << fmt(ratio, 3)
+              << std::endl
+              << "  hourglass-mode energy at QM = 0.1 / internal energy     : "
+              << fmt(ratio_ref, 3) << std::endl
+              << "  limit " << fmt(vp.hourglass_limit)
+              << ", within limit: " << (ratio_ref <= vp.hourglass_limit ? "yes" : "no")
+              << std::endl;
+      }
+    else if (vp.check == "energy balance")
+      {
+        pcout << "Check: energy balance over " << solver->step_number() << " steps" << std::endl
+              << "  largest |balance| / energy scale : " << fmt(max_balance_error, 2) << std::endl
+              << "  tolerance " << fmt(tol) << ", within tolerance: "
+              << (max_balance_error <= tol ? "yes" : "no") << std::endl;
+      }
+  }
+} // namespace WheelRail

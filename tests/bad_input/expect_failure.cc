@@ -1,0 +1,24 @@
+// Runs wheelrail on a parameter file that must be rejected: prints its output
+// and exit status; exits 0 only if wheelrail failed with a non-zero status.
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <sys/wait.h>
+
+int
+main(int argc, char **argv)
+{
+  if (argc != 2)
+    return 2;
+  const std::string command = std::string(WHEELRAIL_EXECUTABLE) + " '" + argv[1] + "' 2>&1";
+  FILE *pipe = popen(command.c_str(), "r");
+  if (!pipe)
+    return 2;
+  char buffer[4096];
+  while (fgets(buffer, sizeof(buffer), pipe))
+    std::cout << buffer;
+  const int status = pclose(pipe);
+  const int code   = WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+  std::cout << "exit status: " << (code != 0 ? "non-zero" : "zero") << std::endl;
+  return code != 0 ? 0 : 1;
+}
