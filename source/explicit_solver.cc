@@ -453,7 +453,7 @@ namespace WheelRail
                            "scaled Jacobian <= 0): check Geometry/Bar/Distortion "
                            "and the Geometry parameters."));
     stable_dt = prm.solver.courant_factor *
-                Utilities::MPI::min(min_dt / c_wave * c_wave, mpi_communicator);
+                Utilities::MPI::min(min_dt, mpi_communicator);
   }
 
 

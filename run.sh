@@ -1,0 +1,83 @@
+#!/usr/bin/env bash
+# wheelrail: set up, build and run.
+#   ./run.sh                    install missing packages, build (Release) into build/,
+#                               run prm/default.prm on 2 MPI ranks
+#   ./run.sh test               same set-up, then the whole test suite (ctest)
+#   ./run.sh CASE.prm [-np N]   same set-up, then run CASE.prm on N ranks (default 2)
+#   ./run.sh build              set-up and build only
+#   ./run.sh help               this text
+set -euo pipefail
+cd "$(dirname "$0")"
+top=$(pwd)
+
+packages=(cmake ninja-build g++ make perl libdeal.ii-dev numdiff openmpi-bin
+          python3 python3-numpy python3-matplotlib python3-h5py)
+
+install_missing_packages() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  echo "run.sh: installing missing Debian packages: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  install_missing_packages
+  if [ ! -f build/CMakeCache.txt ]; then
+    cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
+  fi
+  cmake --build build -j "$(nproc)"
+}
+
+# Open MPI refuses root unless told otherwise (CI and containers run as root);
+# allow more ranks than cores for the tests.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+
+run_case() {
+  local prm=$1 np=$2
+  [ -f "$prm" ] || { echo "run.sh: no such parameter file: $prm" >&2; exit 1; }
+  echo "run.sh: running $prm on $np MPI rank(s)"
+  if [ "$np" -gt 1 ]; then
+    mpirun -np "$np" "$top/build/wheelrail" "$prm"
+  else
+    "$top/build/wheelrail" "$prm"
+  fi
+  local dir
+  dir=$(sed -n 's/^[[:space:]]*set[[:space:]]\+Output directory[[:space:]]*=[[:space:]]*\(.*[^[:space:]]\)[[:space:]]*$/\1/p' "$prm" | tail -1)
+  echo "run.sh: results are in $(cd "${dir:-results}" && pwd)/ (open solution.pvd in ParaView; statistics; probe.csv; parameters.prm)"
+}
+
+verb=${1:-default}
+case "$verb" in
+  default)
+    build
+    run_case prm/default.prm 2
+    ;;
+  test)
+    build
+    ctest --test-dir build -j "$(nproc)" --output-on-failure
+    ;;
+  build)
+    build
+    ;;
+  help|-h|--help)
+    sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+    ;;
+  *.prm)
+    np=2
+    if [ "${2:-}" = "-np" ]; then np=${3:?"-np needs a number"}; fi
+    build
+    run_case "$verb" "$np"
+    ;;
+  *)
+    echo "run.sh: unknown verb '$verb'" >&2
+    sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//' >&2
+    exit 1
+    ;;
+esac
