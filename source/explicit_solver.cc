@@ -230,6 +230,7 @@ namespace WheelRail
     setup_cell_data();
     setup_mass_and_loads();
     setup_prescribed_dofs();
+    setup_applied_forces();
     t       = 0;
     n_steps = 0;
     damping_dissipation = 0;
@@ -580,6 +581,52 @@ namespace WheelRail
 
 
   void
+  ExplicitSolver::setup_applied_forces()
+  {
+    applied.clear();
+    applied_force.reset();
+    if (prm.boundary.applied_force_ids.empty())
+      return;
+    // nodal areas of the loaded boundaries, assembled like a force
+    VectorType area(vector_partitioner);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int face : cell->face_indices())
+          if (cell->face(face)->at_boundary() &&
+              std::find(prm.boundary.applied_force_ids.begin(),
+                        prm.boundary.applied_force_ids.end(),
+                        cell->face(face)->boundary_id()) != prm.boundary.applied_force_ids.end())
+            {
+              const auto   fc = cell->face(face);
+              const double a  = 0.5 * cross_product_3d(fc->vertex(3) - fc->vertex(0),
+                                                      fc->vertex(2) - fc->vertex(1))
+                                       .norm();
+              for (unsigned int v = 0; v < 4; ++v)
+                area.local_element(vector_partitioner->global_to_local(fc->vertex_dof_index(v, 0))) +=
+                  0.25 * a;
+            }
+    condense(area);
+    area.compress(VectorOperation::add);
+    double total = 0;
+    for (unsigned int i = 0; i < area.locally_owned_size(); ++i)
+      total += area.local_element(i);
+    total = Utilities::MPI::sum(total, mpi_communicator);
+    AssertThrow(total > 0,
+                ExcMessage("Boundary conditions/Applied force boundaries: no such boundary in "
+                           "this geometry."));
+    for (unsigned int i = 0; i < area.locally_owned_size(); ++i)
+      if (area.local_element(i) > 0)
+        for (unsigned int d = 0; d < dim; ++d)
+          applied.emplace_back(i + d, d, area.local_element(i) / total);
+    applied_force = make_vector_function(prm.boundary.applied_force_expression,
+                                         prm.boundary.applied_force_constants,
+                                         "x,y,z,t",
+                                         "Boundary conditions/Applied force");
+  }
+
+
+
+  void
   ExplicitSolver::set_time_step(const double time_step)
   {
     AssertThrow(time_step > 0, ExcMessage("Internal error: time step <= 0."));
@@ -660,7 +707,9 @@ namespace WheelRail
   double
   ExplicitSolver::assemble_forces(const VectorType &u_in,
                                   const VectorType *v_in,
-                                  VectorType &      f_out) const
+                                  VectorType &      f_out,
+                                  const bool        with_contact,
+                                  const bool        advance)
   {
     f_out = 0.;
     const double *U = u_in.begin();
@@ -696,6 +745,8 @@ namespace WheelRail
                 F[idx + d] += fb[(a * 3 + d) * W + l];
             }
       }
+    if (with_contact && contact != nullptr)
+      contact->add_forces(u_in, dt, advance, f_out);
     condense(f_out);
     f_out.compress(VectorOperation::add);
     return power;
@@ -704,10 +755,130 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::compute_internal_force(VectorType &force) const
+  ExplicitSolver::compute_internal_force(VectorType &force)
   {
     force.reinit(vector_partitioner);
-    assemble_forces(u, nullptr, force);
+    assemble_forces(u, nullptr, force, false, false);
+  }
+
+
+
+  void
+  ExplicitSolver::compute_residual(VectorType &residual)
+  {
+    residual.reinit(vector_partitioner);
+    assemble_forces(u, nullptr, residual, true, false);
+    for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
+      residual.local_element(i) -= f_ext.local_element(i);
+  }
+
+
+
+  void
+  ExplicitSolver::set_displacement(const VectorType &displacement)
+  {
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      u.local_element(i) = displacement.local_element(i);
+    u.update_ghost_values();
+    distribute(u);
+    u0 = u;
+    for (auto &p : prescribed)
+      p.u_prev = u.local_element(p.index);
+  }
+
+
+
+  Tensor<1, dim>
+  ExplicitSolver::momentum(const types::material_id material) const
+  {
+    double local[3] = {0, 0, 0};
+    for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+      if (node_material[i] == material)
+        local[node_component[i]] += mass.local_element(i) * v.local_element(i);
+    double global[3];
+    Utilities::MPI::sum(ArrayView<const double>(local, 3), mpi_communicator, ArrayView<double>(global, 3));
+    return Tensor<1, dim>({global[0], global[1], global[2]});
+  }
+
+
+
+  Tensor<1, dim>
+  ExplicitSolver::mean_displacement(const types::material_id material) const
+  {
+    double local[4] = {0, 0, 0, 0};
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      if (node_material[i] == material)
+        {
+          local[node_component[i]] += u.local_element(i);
+          if (node_component[i] == 0)
+            local[3] += 1;
+        }
+    double global[4];
+    Utilities::MPI::sum(ArrayView<const double>(local, 4), mpi_communicator, ArrayView<double>(global, 4));
+    Tensor<1, dim> mean;
+    for (unsigned int d = 0; d < dim; ++d)
+      mean[d] = global[3] > 0 ? global[d] / global[3] : 0.;
+    return mean;
+  }
+
+
+
+  std::vector<std::pair<unsigned int, unsigned int>>
+  ExplicitSolver::prescribed_dofs() const
+  {
+    std::vector<std::pair<unsigned int, unsigned int>> result;
+    for (const auto &p : prescribed)
+      result.emplace_back(p.index, p.kind);
+    return result;
+  }
+
+
+
+  void
+  ExplicitSolver::assemble_stiffness(TrilinosWrappers::SparseMatrix &  matrix,
+                                     const AffineConstraints<double> &constraints) const
+  {
+    FullMatrix<double>                   K(24, 24);
+    std::vector<types::global_dof_index> dofs(24);
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      for (unsigned int l = 0; l < std::min(W, n_cells - batch * W); ++l)
+        {
+          const double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
+          const auto    D    = [&](const unsigned int field) { return data[field * W + l]; };
+          const double  V0 = D(Field::volume), la = D(Field::lambda), mu = D(Field::mu),
+                       ka = D(Field::kappa);
+          // gamma_alpha,a = h_alpha,a - c_alpha . b_a
+          double gamma[4][8];
+          for (unsigned int al = 0; al < 4; ++al)
+            for (unsigned int a = 0; a < 8; ++a)
+              {
+                gamma[al][a] = hg[al][a];
+                for (unsigned int j = 0; j < 3; ++j)
+                  gamma[al][a] -= D(Field::c + al * 3 + j) * D(Field::b + a * 3 + j);
+              }
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int bn = 0; bn < 8; ++bn)
+                for (unsigned int k = 0; k < 3; ++k)
+                  {
+                    // V0 (lambda b_ai b_bk + mu (b_ak b_bi + delta_ik b_a.b_b))
+                    double bb = 0;
+                    for (unsigned int j = 0; j < 3; ++j)
+                      bb += D(Field::b + a * 3 + j) * D(Field::b + bn * 3 + j);
+                    double value = V0 * (la * D(Field::b + a * 3 + i) * D(Field::b + bn * 3 + k) +
+                                         mu * D(Field::b + a * 3 + k) * D(Field::b + bn * 3 + i) +
+                                         (i == k ? mu * bb : 0.));
+                    if (i == k)
+                      for (unsigned int al = 0; al < 4; ++al)
+                        value += ka * gamma[al][a] * gamma[al][bn];
+                    K(3 * a + i, 3 * bn + k) = value;
+                  }
+          const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              dofs[3 * a + d] = vector_partitioner->local_to_global(nodes[a * W + l] + d);
+          constraints.distribute_local_to_global(K, dofs, matrix);
+        }
   }
 
 
@@ -782,10 +953,26 @@ namespace WheelRail
       }
 
     const bool   damping = prm.solver.damping_model != "none";
-    const double power   = assemble_forces(u, damping ? &v : nullptr, f);
+    const double power   = assemble_forces(u, damping ? &v : nullptr, f, true, true);
+
+    // applied forces at t_n (enter f with the sign of internal forces)
+    double work_step = 0;
+    Tensor<1, dim> applied_total;
+    if (applied_force)
+      {
+        applied_force->set_time(t);
+        for (unsigned int d = 0; d < dim; ++d)
+          applied_total[d] = applied_force->value(Point<dim>(), d);
+        for (const auto &[i, d, w] : applied)
+          f.local_element(i) -= w * applied_total[d];
+      }
 
     double *           U = u.begin();
     double *           V = v.begin();
+    // applied-force work over the step, with the old velocity (the new one
+    // is added below)
+    for (const auto &[i, d, w] : applied)
+      work_step += 0.5 * h * w * applied_total[d] * V[i];
     const double *     F = f.begin();
     const double *     G = f_ext.begin();
     const double *     IM = inv_mass.begin();
@@ -814,9 +1001,11 @@ namespace WheelRail
           }
       }
 
+    for (const auto &[i, d, w] : applied)
+      work_step += 0.5 * h * w * applied_total[d] * V[i];
+
     // prescribed DoFs: fixed, velocity function (at the middle of the
     // step), spinning axle
-    double           work_step = 0;
     if (prescribed_velocity)
       prescribed_velocity->set_time(t + 0.5 * dt);
     const double     t_new  = t + dt;
@@ -853,7 +1042,7 @@ namespace WheelRail
         const double half     = first ? 0. : 0.5;
         const double local[7] = {ke,
                                  gravity_work,
-                                 damping_dissipation + half * dt * power,
+                                 damping_dissipation + half * h * power,
                                  boundary_work + half * work_step,
                                  energies->internal,
                                  energies->hourglass,
@@ -868,6 +1057,13 @@ namespace WheelRail
         energies->internal            = global[4];
         energies->hourglass           = global[5];
         energies->hourglass_reference = global[6];
+        if (contact)
+          {
+            // replicated on every rank: no sum
+            energies->contact  = contact->summary().elastic_energy;
+            energies->friction = contact->friction_dissipation();
+            energies->damping += contact->damping_dissipation();
+          }
       }
     damping_dissipation += h * power;
     boundary_work += work_step;

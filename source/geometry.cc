@@ -237,17 +237,39 @@ namespace WheelRail
                       }
                     case MaterialIds::rail:
                       {
-                        const Point<dim> q = chart.pull_back(c);
-                        const double     H = p.rail_head_height;
-                        if (std::abs(q[2]) < eps * H)
-                          id = BoundaryIds::rail_top;
-                        else if (std::abs(q[2] + H) < eps * H)
-                          id = BoundaryIds::rail_bottom;
-                        else if (std::abs(std::abs(q[1]) - 0.5 * p.rail_head_width) <
-                                 eps * p.rail_head_width)
-                          id = BoundaryIds::rail_side;
+                        // classify by the face's vertices in chart space: a
+                        // curved face's centre lies below the arc
+                        const double H = p.rail_head_height;
+                        bool top = true, bottom = true, side = true;
+                        for (unsigned int v = 0; v < 4; ++v)
+                          {
+                            const Point<dim> q = chart.pull_back(cell->face(f)->vertex(v));
+                            top    = top && std::abs(q[2]) < eps * H;
+                            bottom = bottom && std::abs(q[2] + H) < eps * H;
+                            side   = side && std::abs(std::abs(q[1]) - 0.5 * p.rail_head_width) <
+                                              eps * p.rail_head_width;
+                          }
+                        id = top    ? BoundaryIds::rail_top :
+                             bottom ? BoundaryIds::rail_bottom :
+                             side   ? BoundaryIds::rail_side :
+                                      BoundaryIds::rail_end;
+                        break;
+                      }
+                    case MaterialIds::block:
+                    case MaterialIds::plate:
+                      {
+                        const bool   block = cell->material_id() == MaterialIds::block;
+                        const double z_bottom =
+                          block ? p.block_gap : -p.plate_size[2];
+                        const double z_top =
+                          block ? p.block_gap + p.block_size[2] : 0.;
+                        const double h = block ? p.block_size[2] : p.plate_size[2];
+                        if (std::abs(c[2] - z_bottom) < eps * h)
+                          id = block ? BoundaryIds::block_bottom : BoundaryIds::plate_bottom;
+                        else if (std::abs(c[2] - z_top) < eps * h)
+                          id = block ? BoundaryIds::block_top : BoundaryIds::plate_top;
                         else
-                          id = BoundaryIds::rail_end;
+                          id = block ? BoundaryIds::block_side : BoundaryIds::plate_side;
                         break;
                       }
                     default:
@@ -363,6 +385,40 @@ namespace WheelRail
                   vertices,
                   cells);
       }
+
+
+
+      void
+      build_block_on_plate(const GeometryParameters &  p,
+                           std::vector<Point<dim>> &   vertices,
+                           std::vector<CellData<dim>> &cells)
+      {
+        const auto box = [&](const Point<dim> &                lower,
+                             const Tensor<1, dim> &            size,
+                             const std::vector<unsigned int> &n,
+                             const types::material_id          material) {
+          add_block(n[0],
+                    n[1],
+                    n[2],
+                    false,
+                    material,
+                    [&](unsigned int i, unsigned int j, unsigned int k) {
+                      return Point<dim>(lower[0] + i * size[0] / n[0],
+                                        lower[1] + j * size[1] / n[1],
+                                        lower[2] + k * size[2] / n[2]);
+                    },
+                    vertices,
+                    cells);
+        };
+        box(Point<dim>(0, -0.5 * p.plate_size[1], -p.plate_size[2]),
+            p.plate_size,
+            p.plate_cells,
+            MaterialIds::plate);
+        box(Point<dim>(p.block_x, -0.5 * p.block_size[1], p.block_gap),
+            p.block_size,
+            p.block_cells,
+            MaterialIds::block);
+      }
     } // namespace
 
 
@@ -394,6 +450,10 @@ namespace WheelRail
                                   2 * a * p.rail_head_height;
               return area * (p.rail_end_x - p.rail_start_x);
             }
+          case MaterialIds::block:
+            return p.block_size[0] * p.block_size[1] * p.block_size[2];
+          case MaterialIds::plate:
+            return p.plate_size[0] * p.plate_size[1] * p.plate_size[2];
           default:
             return p.bar_length * p.bar_width * p.bar_height;
         }
@@ -410,6 +470,8 @@ namespace WheelRail
       std::vector<CellData<dim>> cells;
       if (geometry_type == "bar")
         build_bar(p, vertices, cells);
+      else if (geometry_type == "block on plate")
+        build_block_on_plate(p, vertices, cells);
       else
         build_wheel_and_rail(p, vertices, cells);
 
@@ -434,7 +496,7 @@ namespace WheelRail
       triangulation.set_manifold(ManifoldIds::rail,
                                  RailChart(p.rail_head_height, p.rail_profile_radius));
 
-      if (geometry_type == "bar")
+      if (geometry_type != "wheel and rail")
         return;
 
       const double coarse_size = effective_coarse_size(p);

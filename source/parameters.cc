@@ -37,15 +37,19 @@ namespace WheelRail
     prm.enter_subsection("Problem");
     prm.declare_entry("Geometry",
                       "wheel and rail",
-                      Patterns::Selection("wheel and rail|bar"),
+                      Patterns::Selection("wheel and rail|bar|block on plate"),
                       "Bodies to mesh: 'wheel and rail' is the model of the "
                       "paper (SPEC 1); 'bar' is a straight prismatic bar "
-                      "(subsection Geometry/Bar) for verification.");
+                      "(subsection Geometry/Bar) and 'block on plate' a block "
+                      "resting on a plate (Geometry/Block on plate), both for "
+                      "verification.");
     prm.declare_entry(
       "Mode",
       "explicit dynamics",
-      Patterns::Selection("explicit dynamics|patch test|rigid rotation"),
+      Patterns::Selection("explicit dynamics|static contact|patch test|rigid rotation"),
       "'explicit dynamics': central-difference time integration. "
+      "'static contact': the implicit equilibrium of the wheel pressed "
+      "onto the rail with Static solve/Axle load, compared with Hertz. "
       "'patch test': impose the linear displacement u = G X "
       "(Verification/Displacement gradient) on every node and compare the "
       "element stresses with the exact St. Venant-Kirchhoff stress and the "
@@ -198,6 +202,35 @@ namespace WheelRail
                         "to O.");
       prm.leave_subsection();
 
+      prm.enter_subsection("Block on plate");
+      prm.declare_entry("Plate size",
+                        "0.2, 0.06, 0.02",
+                        vector_pattern(),
+                        "Plate extent along x, y, z [m]; it spans [0, Lx] x "
+                        "[-Ly/2, Ly/2] x [-Lz, 0], its top at z = 0.");
+      prm.declare_entry("Plate cells",
+                        "20, 6, 2",
+                        Patterns::List(Patterns::Integer(1, 10000), 3, 3, ","),
+                        "Plate cells along x, y, z [-].");
+      prm.declare_entry("Block size",
+                        "0.02, 0.02, 0.01",
+                        vector_pattern(),
+                        "Block extent along x, y, z [m]; centred on y = 0.");
+      prm.declare_entry("Block cells",
+                        "4, 4, 2",
+                        Patterns::List(Patterns::Integer(1, 10000), 3, 3, ","),
+                        "Block cells along x, y, z [-].");
+      prm.declare_entry("Block x",
+                        "0.02",
+                        Patterns::Double(-100, 100),
+                        "x of the block's rear face [m].");
+      prm.declare_entry("Block gap",
+                        "0",
+                        Patterns::Double(-0.001, 1),
+                        "Height of the block's bottom above the plate top [m], "
+                        "range [-0.001, 1].");
+      prm.leave_subsection();
+
       prm.enter_subsection("Bar");
       prm.declare_entry("Length",
                         "1.0",
@@ -270,6 +303,24 @@ namespace WheelRail
              Utilities::split_string_list(prm.get("Cells"), ',')))
         bar_cells.push_back(n);
       bar_distortion = prm.get_double("Distortion");
+      prm.leave_subsection();
+
+      prm.enter_subsection("Block on plate");
+      const auto cells = [&](const std::string &name) {
+        std::vector<unsigned int> n;
+        for (const int i : Utilities::string_to_int(Utilities::split_string_list(prm.get(name), ',')))
+          n.push_back(i);
+        return n;
+      };
+      plate_size  = get_vector(prm, "Plate size");
+      plate_cells = cells("Plate cells");
+      block_size  = get_vector(prm, "Block size");
+      block_cells = cells("Block cells");
+      block_x     = prm.get_double("Block x");
+      block_gap   = prm.get_double("Block gap");
+      for (unsigned int d = 0; d < 3; ++d)
+        AssertThrow(plate_size[d] > 0 && block_size[d] > 0,
+                    ExcMessage("Geometry/Block on plate: Plate size and Block size must be positive."));
       prm.leave_subsection();
     }
     prm.leave_subsection();
@@ -456,6 +507,20 @@ namespace WheelRail
                       "",
                       Patterns::Anything(),
                       "Constants for the expression, 'name=value, ...'.");
+    prm.declare_entry("Applied force boundaries",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 255)),
+                      "Boundary ids loaded by the applied force below.");
+    prm.declare_entry("Applied force",
+                      "0; 0; 0",
+                      Patterns::Anything(),
+                      "Total force on the applied-force boundaries [N], three "
+                      "muparser expressions 'Fx; Fy; Fz' in t (s), spread over "
+                      "their nodes in proportion to the nodal area.");
+    prm.declare_entry("Applied force constants",
+                      "",
+                      Patterns::Anything(),
+                      "Constants for the expression, 'name=value, ...'.");
     prm.declare_entry("Wheel bore",
                       "spinning axle",
                       Patterns::Selection("free|fixed|spinning axle"),
@@ -485,6 +550,168 @@ namespace WheelRail
     prescribed_velocity_expression = prm.get("Prescribed velocity");
     prescribed_velocity_constants  = prm.get("Prescribed velocity constants");
     wheel_bore                     = prm.get("Wheel bore");
+    applied_force_ids.clear();
+    for (const int id : Utilities::string_to_int(
+           Utilities::split_string_list(prm.get("Applied force boundaries"))))
+      applied_force_ids.push_back(id);
+    applied_force_expression = prm.get("Applied force");
+    applied_force_constants  = prm.get("Applied force constants");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Enabled",
+                      "true",
+                      Patterns::Bool(),
+                      "Penalty node-to-segment contact between the slave and "
+                      "master boundaries.");
+    prm.declare_entry("Slave boundary",
+                      "1",
+                      Patterns::Integer(0, 255),
+                      "Boundary id of the slave nodes (1 = wheel tread, 30 = "
+                      "block bottom).");
+    prm.declare_entry("Master boundary",
+                      "10",
+                      Patterns::Integer(0, 255),
+                      "Boundary id of the master faces (10 = rail top, 40 = "
+                      "plate top).");
+    prm.declare_entry("Two pass",
+                      "false",
+                      Patterns::Bool(),
+                      "Also treat the master boundary's nodes as slaves of the "
+                      "slave boundary's faces (symmetric contact).");
+    prm.declare_entry("Penalty scale factor",
+                      "0.1",
+                      Patterns::Double(1e-6, 100),
+                      "SF in the penalty stiffness k = SF K A^2 / V (K bulk "
+                      "modulus, A master face area, V its cell's volume) [-], "
+                      "range [1e-6, 100].");
+    prm.declare_entry("Tangential stiffness factor",
+                      "1",
+                      Patterns::Double(1e-6, 100),
+                      "k_t / k of the elastic friction predictor [-], range "
+                      "[1e-6, 100].");
+    prm.declare_entry("Contact damping",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "Viscous damping of the normal contact force, a fraction "
+                      "of the critical damping 2 sqrt(k m) of the slave node on "
+                      "its penalty spring (LS-DYNA's VDC / 100) [-], range "
+                      "[0, 1]; it damps the chatter of bodies resting on each "
+                      "other.");
+    prm.declare_entry("Search interval",
+                      "10",
+                      Patterns::Integer(1, 1000000),
+                      "Steps between rebuilds of the candidate lists [-], range "
+                      "[1, 1e6].");
+    prm.declare_entry("Search margin",
+                      "0.002",
+                      Patterns::Double(1e-6, 1),
+                      "Distance around the master surface within which slave "
+                      "nodes are candidates [m], range [1e-6, 1].");
+    prm.declare_entry("Rebuild fraction",
+                      "0.5",
+                      Patterns::Double(0.01, 1),
+                      "The candidates are also rebuilt when a candidate node "
+                      "has moved more than this fraction of the search margin "
+                      "since the last rebuild [-], range [0.01, 1].");
+    prm.declare_entry("Friction law",
+                      "exponential",
+                      Patterns::Selection("none|constant|exponential"),
+                      "'none': frictionless; 'constant': Coulomb, f = Static "
+                      "friction coefficient; 'exponential': f = f_D + (f_S - "
+                      "f_D) exp(-k s_n) (paper eq. 1), s_n the micro-slip "
+                      "velocity.");
+    prm.declare_entry("Static friction coefficient",
+                      "0.5",
+                      Patterns::Double(0, 10),
+                      "f_S [-], range [0, 10].");
+    prm.declare_entry("Dynamic friction coefficient",
+                      "0.32",
+                      Patterns::Double(0, 10),
+                      "f_D [-], range [0, 10].");
+    prm.declare_entry("Decay coefficient",
+                      "6",
+                      Patterns::Double(0, 1e6),
+                      "k of the exponential law [s/m], range [0, 1e6].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    enabled             = prm.get_bool("Enabled");
+    slave_boundary      = prm.get_integer("Slave boundary");
+    master_boundary     = prm.get_integer("Master boundary");
+    two_pass            = prm.get_bool("Two pass");
+    penalty_scale       = prm.get_double("Penalty scale factor");
+    tangential_factor   = prm.get_double("Tangential stiffness factor");
+    damping_ratio       = prm.get_double("Contact damping");
+    search_interval     = prm.get_integer("Search interval");
+    search_margin       = prm.get_double("Search margin");
+    rebuild_fraction    = prm.get_double("Rebuild fraction");
+    friction_law        = prm.get("Friction law");
+    static_coefficient  = prm.get_double("Static friction coefficient");
+    dynamic_coefficient = prm.get_double("Dynamic friction coefficient");
+    decay               = prm.get_double("Decay coefficient");
+    prm.leave_subsection();
+    AssertThrow(slave_boundary != master_boundary,
+                ExcMessage("Contact/Slave boundary and Contact/Master boundary must differ."));
+  }
+
+
+
+  void
+  StaticParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static solve");
+    prm.declare_entry("Axle load",
+                      "140300",
+                      Patterns::Double(0, 1e8),
+                      "Vertical force F_N of the wheel on the rail sought by "
+                      "the static contact solve [N], range [0, 1e8]; the paper: "
+                      "(13.4 t + 0.9 t) g = 140.3 kN.");
+    prm.declare_entry("Load tolerance",
+                      "1e-4",
+                      Patterns::Double(1e-12, 0.1),
+                      "Relative tolerance on the contact force [-], range "
+                      "[1e-12, 0.1].");
+    prm.declare_entry("Newton tolerance",
+                      "1e-5",
+                      Patterns::Double(1e-14, 1e-2),
+                      "Newton stops when the residual norm falls below this "
+                      "fraction of the load's norm [-], range [1e-14, 1e-2].");
+    prm.declare_entry("Max Newton iterations",
+                      "30",
+                      Patterns::Integer(1, 1000),
+                      "Largest number of Newton iterations per load step [-].");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-8",
+                      Patterns::Double(1e-16, 1e-2),
+                      "Relative tolerance of CG with AMG [-], range "
+                      "[1e-16, 1e-2].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StaticParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static solve");
+    axle_load             = prm.get_double("Axle load");
+    load_tolerance        = prm.get_double("Load tolerance");
+    newton_tolerance      = prm.get_double("Newton tolerance");
+    max_newton_iterations = prm.get_integer("Max Newton iterations");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
     prm.leave_subsection();
   }
 
@@ -587,7 +814,8 @@ namespace WheelRail
       "Check",
       "none",
       Patterns::Selection(
-        "none|wave arrival|longitudinal frequency|bending frequency|energy balance"),
+        "none|wave arrival|longitudinal frequency|bending frequency|energy balance|"
+        "inclined plane|tangential sliding|impact"),
       "Analytic comparison made at the end of an explicit run on the bar: "
       "'wave arrival': first time the probe velocity exceeds Wave threshold "
       "times the far-end steady value, against L/sqrt(E/rho); "
@@ -596,7 +824,14 @@ namespace WheelRail
       "(clamped); 'bending frequency': against the Euler-Bernoulli "
       "cantilever 1.8751^2/(2 pi L^2) sqrt(EI/(rho A)); this check also "
       "compares the hourglass energy ratio with Hourglass limit; 'energy balance': "
-      "the largest relative energy balance error of the run against Tolerance.");
+      "the largest relative energy balance error of the run against Tolerance; "
+      "'inclined plane' (block on plate, gravity tilted by theta in the x-z "
+      "plane): sliding acceleration against g (sin theta - f(v) cos theta), or "
+      "for tan theta < f the drift against the elastic slip of the friction "
+      "springs; 'tangential sliding': the friction force saturates at f F_N and "
+      "the friction dissipation equals the applied work minus the kinetic "
+      "energy; 'impact': momentum conserved, contact released, no energy "
+      "gained.");
     prm.declare_entry("Displacement gradient",
                       "1e-3, 2e-4, -3e-4, 5e-4, -1e-3, 2e-4, 1e-4, 3e-4, 2e-3",
                       Patterns::List(Patterns::Double(-1, 1), 9, 9, ","),
@@ -715,6 +950,8 @@ namespace WheelRail
     SolverParameters::declare_parameters(prm);
     BoundaryParameters::declare_parameters(prm);
     InitialParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    StaticParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
   }
@@ -737,6 +974,8 @@ namespace WheelRail
     solver.parse_parameters(prm);
     boundary.parse_parameters(prm);
     initial.parse_parameters(prm);
+    contact.parse_parameters(prm);
+    statics.parse_parameters(prm);
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
     // validate the expressions now, so that a typo stops the run at once
@@ -744,6 +983,10 @@ namespace WheelRail
                          initial.velocity_constants,
                          "x,y,z",
                          "Initial conditions/Velocity function");
+    make_vector_function(boundary.applied_force_expression,
+                         boundary.applied_force_constants,
+                         "x,y,z,t",
+                         "Boundary conditions/Applied force");
     make_vector_function(boundary.prescribed_velocity_expression,
                          boundary.prescribed_velocity_constants,
                          "x,y,z,t",

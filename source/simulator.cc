@@ -6,7 +6,9 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <wheelrail/geometry.h>
+#include <wheelrail/hertz.h>
 #include <wheelrail/simulator.h>
+#include <wheelrail/static_solver.h>
 
 #include <cmath>
 #include <cstdio>
@@ -138,6 +140,12 @@ namespace WheelRail
     Geometry::build(parameters.geometry, parameters.problem.geometry, triangulation);
     solver = std::make_unique<ExplicitSolver>(parameters, triangulation);
     solver->setup();
+    if (parameters.contact.enabled && parameters.problem.geometry != "bar")
+      {
+        contact = std::make_unique<PenaltyContact>(parameters.contact, parameters.material, mpi_communicator);
+        contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->lumped_mass());
+        solver->attach_contact(contact.get());
+      }
 
     if (parameters.solver.time_step > 0)
       {
@@ -160,6 +168,8 @@ namespace WheelRail
       }
     if (parameters.problem.mode == "explicit dynamics")
       run_explicit();
+    else if (parameters.problem.mode == "static contact")
+      run_static_contact();
     else
       run_static_check();
   }
@@ -215,6 +225,22 @@ namespace WheelRail
     else if (parameters.solver.damping_model == "Rayleigh")
       pcout << " (beta " << fmt(parameters.solver.rayleigh_beta) << " s)";
     pcout << std::endl;
+    if (contact)
+      {
+        const ContactParameters &cp = parameters.contact;
+        pcout << "Contact" << std::endl
+              << "  slave boundary " << cp.slave_boundary << " (" << contact->slave_states().size()
+              << " nodes), master boundary " << cp.master_boundary
+              << (cp.two_pass ? ", two-pass" : ", one-pass") << std::endl
+              << "  penalty scale factor SF    : " << fmt(cp.penalty_scale) << std::endl
+              << "  friction law               : " << cp.friction_law;
+        if (cp.friction_law == "constant")
+          pcout << " (f = " << fmt(cp.static_coefficient) << ")";
+        else if (cp.friction_law == "exponential")
+          pcout << " (f_S = " << fmt(cp.static_coefficient) << ", f_D = "
+                << fmt(cp.dynamic_coefficient) << ", k = " << fmt(cp.decay) << " s/m)";
+        pcout << std::endl;
+      }
     if (parameters.problem.mode == "explicit dynamics")
       pcout << "  steps                        : "
             << static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9))
@@ -241,11 +267,12 @@ namespace WheelRail
         const Tensor<2, dim> Sx  = parameters.material.lambda() * trace(Ex) *
                                     Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
                                   2. * parameters.material.mu() * Ex;
-        double max_stress_error = 0;
+        double     max_stress_error = 0;
+        const auto stresses         = solver->cell_stresses();
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              const auto &s = solver->cell_stresses()[cell->active_cell_index()];
+              const auto &s = stresses[cell->active_cell_index()];
               max_stress_error =
                 std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
             }
@@ -305,6 +332,149 @@ namespace WheelRail
           << std::endl
           << "  both within " << fmt(tol) << "                      : "
           << (max_vm / E < tol && max_force / scale < tol ? "yes" : "no") << std::endl;
+  }
+
+
+
+  void
+  Simulator::write_contact_nodes(const std::string &name) const
+  {
+    // replicated on every rank: rank 0 writes
+    const auto &states = contact->slave_states();
+    double      max_ft = 0;
+    for (const auto &s : states)
+      max_ft = std::max(max_ft, s.tangential_force.norm());
+    const double eps_t = 0.003 * max_ft; // SPEC 6, eq. 5
+    const double eps_s = 0.05;           // m/s, eq. 6
+    std::ostringstream out;
+    out << std::setprecision(9)
+        << "# slave-node contact state at t = " << solver->time()
+        << " s; SI units; x, y, z current position; adhesion by eq. 5 (f|F_n| - |F_t| > "
+        << eps_t << " N), slip by eq. 6 (s_n > " << eps_s << " m/s)\n"
+        << "X,Y,Z,x,y,z,in_contact,gap,F_n,F_t_x,F_t_y,F_t_z,area,pressure,shear_x,shear,"
+           "slip_velocity,cof,adhesion_eq5,slip_eq6\n";
+    for (const auto &s : states)
+      if (s.in_contact || s.gap < parameters.contact.search_margin)
+        {
+          const double shear = s.area > 0 ? s.tangential_force.norm() / s.area : 0.;
+          out << s.X[0] << ',' << s.X[1] << ',' << s.X[2] << ',' << s.x[0] << ',' << s.x[1] << ','
+              << s.x[2] << ',' << s.in_contact << ',' << s.gap << ',' << s.normal_force << ','
+              << s.tangential_force[0] << ',' << s.tangential_force[1] << ','
+              << s.tangential_force[2] << ',' << s.area << ',' << s.pressure() << ','
+              << (s.area > 0 ? s.tangential_force[0] / s.area : 0.) << ',' << shear << ','
+              << s.slip_velocity << ',' << s.cof << ','
+              << (s.in_contact && s.cof * s.normal_force - s.tangential_force.norm() > eps_t) << ','
+              << (s.in_contact && s.slip_velocity > eps_s) << '\n';
+        }
+    write_file(name, out.str());
+  }
+
+
+
+  void
+  Simulator::run_static_contact()
+  {
+    AssertThrow(parameters.problem.geometry == "wheel and rail" && contact,
+                ExcMessage("Problem/Mode = static contact needs Problem/Geometry = wheel and "
+                           "rail and Contact/Enabled = true."));
+    Timer               timer;
+    std::ostringstream  silent;
+    std::ostream &      log =
+      (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode) ?
+             std::cout :
+             silent;
+    StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
+    const StaticResult  r = statics.solve(parameters.statics.axle_load, log);
+    pcout << "Static solution: axle displacement " << fmt(r.axle_displacement * 1e6) << " um, "
+          << "contact force " << fmt(r.contact_force * 1e-3) << " kN after " << r.load_iterations
+          << " load iterations, " << r.newton_iterations << " Newton iterations";
+    if (!parameters.problem.test_mode)
+      pcout << ", " << r.linear_iterations << " CG iterations, " << fmt(timer.wall_time(), 3) << " s";
+    pcout << std::endl;
+
+    // contact patch: least-squares fit p^2 = p0^2 (1 - (x-xc)^2/a^2 - y^2/b^2)
+    // over the nodes with p > 25 % of the largest (the edge nodes' tributary
+    // areas reach beyond the patch)
+    const auto &states = contact->slave_states();
+    double      p_max = 0, force = 0, xc = 0, max_pen = 0;
+    unsigned int n_contact = 0;
+    for (const auto &s : states)
+      if (s.in_contact)
+        {
+          p_max = std::max(p_max, s.pressure());
+          force += s.normal_force;
+          xc += s.normal_force * s.X[0];
+          max_pen = std::max(max_pen, -s.gap);
+          ++n_contact;
+        }
+    AssertThrow(n_contact > 0, ExcMessage("The static contact solve found no contact."));
+    xc /= force;
+    FullMatrix<double> M(3, 3);
+    Vector<double>     rhs(3), c(3);
+    double             x_extent = 0, y_extent = 0, pen_at_peak = 0;
+    for (const auto &s : states)
+      if (s.in_contact)
+        {
+          x_extent = std::max(x_extent, std::abs(s.X[0] - xc));
+          y_extent = std::max(y_extent, std::abs(s.X[1]));
+          if (s.pressure() == p_max)
+            pen_at_peak = -s.gap;
+          if (s.pressure() < 0.25 * p_max)
+            continue;
+          const double phi[3] = {1., (s.X[0] - xc) * (s.X[0] - xc), s.X[1] * s.X[1]};
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              rhs(i) += phi[i] * s.pressure() * s.pressure();
+              for (unsigned int j = 0; j < 3; ++j)
+                M(i, j) += phi[i] * phi[j];
+            }
+        }
+    M.gauss_jordan();
+    M.vmult(c, rhs);
+    const double p0 = std::sqrt(c(0)), a = std::sqrt(-c(0) / c(1)), b = std::sqrt(-c(0) / c(2));
+
+    const GeometryParameters &g  = parameters.geometry;
+    const double E_star = parameters.material.youngs_modulus /
+                          (2 * (1 - parameters.material.poisson_ratio * parameters.material.poisson_ratio));
+    const HertzSolution h = hertz_contact(0.5 / g.wheel_radius,
+                                          0.5 / g.rail_profile_radius,
+                                          r.contact_force,
+                                          E_star);
+    const double tol = parameters.verification.tolerance;
+    const auto line = [&](const std::string &what, const double fe, const double ref,
+                          const double scale, const std::string &unit) {
+      const double err = std::abs(fe - ref) / ref;
+      pcout << "  " << std::left << std::setw(34) << what << std::right << std::setw(10)
+            << fmt(fe * scale, 5) << " " << std::setw(10) << fmt(ref * scale, 5) << " " << unit
+            << "   error " << fmt(err, 2) << (err <= tol ? "  ok" : "  OUT OF TOLERANCE")
+            << std::endl;
+    };
+    pcout << "Contact patch against Hertz (E* = " << fmt(E_star * 1e-9, 5) << " GPa, A = 1/(2 R_w), "
+          << "B = 1/(2 R_rail))" << std::endl
+          << "  nodes in contact " << n_contact << ", total normal force " << fmt(force * 1e-3)
+          << " kN, largest nodal pressure " << fmt(p_max * 1e-6, 5) << " MPa" << std::endl
+          << "  penetration at peak pressure " << fmt(pen_at_peak * 1e6, 4)
+          << " um, largest penetration " << fmt(max_pen * 1e6, 4) << " um, Hertz approach "
+          << fmt(h.approach * 1e6, 4) << " um" << std::endl
+          << "  extent of the contact nodes: x +/- " << fmt(x_extent * 1e3, 4) << " mm, y +/- "
+          << fmt(y_extent * 1e3, 4) << " mm" << std::endl
+          << "  quantity (fit p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2))   FE     Hertz" << std::endl;
+    line("semi-axis a (rolling, x)", a, h.a, 1e3, "mm");
+    line("semi-axis b (lateral, y)", b, h.b, 1e3, "mm");
+    line("peak pressure p0", p0, h.p0, 1e-6, "MPa");
+    pcout << "  within tolerance " << fmt(tol) << ": "
+          << (std::abs(a - h.a) <= tol * h.a && std::abs(b - h.b) <= tol * h.b &&
+                  std::abs(p0 - h.p0) <= tol * h.p0 ?
+                "yes" :
+                "no")
+          << std::endl;
+    write_contact_nodes("contact_nodes.csv");
+    if (!parameters.problem.test_mode)
+      {
+        write_vtu();
+        pcout << "  results in " << output_directory << "/ (contact_nodes.csv, solution.pvd)"
+              << std::endl;
+      }
   }
 
 
@@ -387,36 +557,70 @@ namespace WheelRail
     const double balance = e.total() - initial_energies.total();
     max_balance_error    = std::max(max_balance_error, std::abs(balance) / scale);
 
+    const auto add = [&](const std::string &key, const double value) {
+      statistics.add_value(key, value);
+      statistics.set_scientific(key, true);
+      statistics.set_precision(key, 8);
+    };
     statistics.add_value("step", static_cast<unsigned int>(e.step));
-    statistics.add_value("time [s]", e.time);
-    if (parameters.problem.geometry != "bar")
+    add("time [s]", e.time);
+    if (parameters.problem.geometry == "wheel and rail")
       {
         const Tensor<1, dim> ub = solver->bore_displacement();
         const Point<dim>     c  = Geometry::wheel_centre(parameters.geometry);
-        statistics.add_value("wheel x [m]", c[0] + ub[0]);
-        statistics.add_value("axle z [m]", c[2] + ub[2]);
+        add("wheel x [m]", c[0] + ub[0]);
+        add("axle z [m]", c[2] + ub[2]);
       }
-    statistics.add_value("kinetic [J]", e.kinetic);
-    statistics.add_value("internal [J]", e.internal);
-    statistics.add_value("hourglass [J]", e.hourglass);
-    statistics.add_value("damping dissipation [J]", e.damping);
-    statistics.add_value("external work [J]", e.external_work);
-    statistics.add_value("balance [J]", balance);
-    statistics.add_value("balance error [-]", std::abs(balance) / scale);
-    for (const auto &key : {"time [s]",
-                            "wheel x [m]",
-                            "axle z [m]",
-                            "kinetic [J]",
-                            "internal [J]",
-                            "hourglass [J]",
-                            "damping dissipation [J]",
-                            "external work [J]",
-                            "balance [J]",
-                            "balance error [-]"})
+    if (contact)
       {
-        statistics.set_scientific(key, true);
-        statistics.set_precision(key, 8);
+        const ContactSummary &cs = contact->summary();
+        add("F_N [N]", cs.force[2]);
+        add("F_L [N]", cs.force[0]);
+        add("F_lateral [N]", cs.force[1]);
+        add("mu_a [-]", cs.force[2] != 0 ? cs.force[0] / cs.force[2] : 0.);
+        statistics.add_value("contact nodes", cs.n_contact);
+        statistics.add_value("slip nodes", cs.n_slip);
+        add("max penetration [m]", cs.max_penetration);
       }
+    add("kinetic [J]", e.kinetic);
+    add("internal [J]", e.internal);
+    add("hourglass [J]", e.hourglass);
+    add("damping dissipation [J]", e.damping);
+    if (contact)
+      {
+        add("contact energy [J]", e.contact);
+        add("friction dissipation [J]", e.friction);
+      }
+    add("external work [J]", e.external_work);
+    add("balance [J]", balance);
+    add("balance error [-]", std::abs(balance) / scale);
+  }
+
+
+
+  void
+  Simulator::record_sample(const Energies &e)
+  {
+    if (parameters.problem.geometry != "block on plate")
+      return;
+    Sample s;
+    s.t                  = e.time;
+    s.block_momentum     = solver->momentum(Geometry::MaterialIds::block);
+    s.plate_momentum     = solver->momentum(Geometry::MaterialIds::plate);
+    s.block_displacement = solver->mean_displacement(Geometry::MaterialIds::block);
+    s.contact_force      = contact ? contact->summary().force : Tensor<1, dim>();
+    s.relative_displacement =
+      contact ? contact->summary().relative_displacement : Tensor<1, dim>();
+    s.n_contact          = contact ? contact->summary().n_contact : 0;
+    s.kinetic            = e.kinetic;
+    s.external_work      = e.external_work;
+    s.friction           = e.friction;
+    s.total              = e.total();
+    s.tangential_stiffness = 0;
+    if (contact)
+      for (const auto &p : contact->active_pairs())
+        s.tangential_stiffness += parameters.contact.tangential_factor * p.stiffness;
+    samples.push_back(s);
   }
 
 
@@ -506,8 +710,14 @@ namespace WheelRail
   {
     pcout << "step " << std::setw(8) << e.step << "  t = " << std::setw(10) << fmt(e.time * 1e3) << " ms  E_kin " << fmt(e.kinetic) << " J  E_int "
           << fmt(e.internal) << " J  E_hg " << fmt(e.hourglass, 3) << " J  D " << fmt(e.damping, 3)
-          << " J  W_ext " << fmt(e.external_work) << " J  balance error "
-          << fmt(max_balance_error, 2);
+          << " J  W_ext " << fmt(e.external_work) << " J";
+    if (contact)
+      pcout << "  contact " << contact->summary().n_contact << " nodes, F = ("
+            << fmt(contact->summary().force[0] * 1e-3, 4) << ", "
+            << fmt(contact->summary().force[1] * 1e-3, 4) << ", "
+            << fmt(contact->summary().force[2] * 1e-3, 4) << ") kN  E_c " << fmt(e.contact, 3)
+            << " J  D_f " << fmt(e.friction, 3) << " J";
+    pcout << "  balance error " << fmt(max_balance_error, 2);
     if (!parameters.problem.test_mode)
       pcout << "  [" << fmt(wall_seconds, 3) << " s]";
     pcout << std::endl;
@@ -540,6 +750,8 @@ namespace WheelRail
         Energies   e;
         solver->step(stats_step ? &e : nullptr);
         record_probe();
+        if (contact)
+          friction_violations += contact->summary().n_violation;
         if (stats_step)
           {
             const double wall = timer.wall_time();
@@ -561,6 +773,7 @@ namespace WheelRail
                 have_initial_energies = true;
               }
             add_statistics_row(e);
+            record_sample(e);
             internal_time_integral += e.internal;
             hourglass_time_integral += e.hourglass;
             hourglass_ref_time_integral += e.hourglass_reference;
@@ -575,6 +788,8 @@ namespace WheelRail
       }
     write_statistics();
     write_probe();
+    if (contact)
+      write_contact_nodes("contact_nodes.csv");
     if (!test)
       write_vtu();
     timer.stop();
@@ -589,7 +804,12 @@ namespace WheelRail
                        Utilities::MPI::n_mpi_processes(mpi_communicator),
                      4)
               << " ns per element-step per rank (" << fmt(timer.wall_time() / (cells * n_steps) * 1e9, 4)
-              << " ns wall)" << std::endl
+              << " ns wall)" << std::endl;
+        if (contact)
+          pcout << "  contact: " << contact->n_searches() << " candidate searches, "
+                << fmt(contact->search_seconds() / std::max(1u, contact->n_searches()) * 1e3, 3)
+                << " ms per search" << std::endl;
+        pcout
               << "  results in " << output_directory
               << "/ (solution.pvd, statistics, probe.csv, parameters.prm)" << std::endl;
       }
@@ -682,6 +902,125 @@ namespace WheelRail
               << "  limit " << fmt(vp.hourglass_limit)
               << ", within limit: " << (ratio_ref <= vp.hourglass_limit ? "yes" : "no")
               << std::endl;
+      }
+    else if (vp.check == "inclined plane" || vp.check == "tangential sliding" ||
+             vp.check == "impact")
+      {
+        AssertThrow(parameters.problem.geometry == "block on plate" && contact && samples.size() > 4,
+                    ExcMessage("Verification/Check = " + vp.check +
+                               " needs Problem/Geometry = block on plate, contact and at least "
+                               "five statistics rows."));
+        const double m_block = solver->total_mass(Geometry::MaterialIds::block);
+        const auto   law     = contact->friction_law();
+        pcout << "Check: " << vp.check << " (block mass " << fmt(m_block * 1e3, 6) << " g)"
+              << std::endl
+              << "  friction violations |F_t| > f |F_n| over all steps and nodes: "
+              << friction_violations << std::endl;
+        if (vp.check == "inclined plane")
+          {
+            const Tensor<1, dim> g     = parameters.solver.gravity;
+            const double         theta = std::atan2(std::abs(g[0]), std::abs(g[2]));
+            const double         gn    = g.norm();
+            const double         f_s   = law ? law->coefficient(0.) : 0.;
+            pcout << "  theta " << fmt(theta * 180 / M_PI, 5) << " degrees, tan(theta) "
+                  << fmt(std::tan(theta), 5) << ", f_S " << fmt(f_s) << std::endl;
+            if (std::tan(theta) < f_s)
+              {
+                // after the first half (the block has settled on the plate
+                // from its initial drop) it must not creep: its drift stays
+                // within the elastic slip of the friction springs
+                const unsigned int half = samples.size() / 2;
+                double             drift = 0, total = 0;
+                for (unsigned int i = half; i < samples.size(); ++i)
+                  drift = std::max(drift,
+                                   std::abs(samples[i].relative_displacement[0] -
+                                            samples[half].relative_displacement[0]));
+                for (const auto &s : samples)
+                  total = std::max(total, std::abs(s.block_displacement[0]));
+                const double kt    = samples.back().tangential_stiffness;
+                const double bound = m_block * gn * std::sin(theta) / kt;
+                const double T     = samples.back().t - samples[half].t;
+                const double free  = 0.5 * gn * std::sin(theta) * T * T;
+                pcout << "  block sticks: largest displacement " << fmt(total * 1e9, 3)
+                      << " nm (from the initial drop); drift relative to the plate over the "
+                         "second half "
+                      << fmt(drift * 1e9, 3) << " nm" << std::endl
+                      << "  elastic slip of the friction springs m g sin(theta) / sum k_t "
+                      << fmt(bound * 1e9, 3) << " nm; free sliding over the second half would be "
+                      << fmt(free * 1e3, 3) << " mm" << std::endl
+                      << "  drift / elastic slip " << fmt(drift / bound, 2) << " (limit 2)"
+                      << std::endl
+                      << "  within tolerance: " << (drift <= 2 * bound ? "yes" : "no") << std::endl;
+              }
+            else
+              {
+                // least-squares slope of the block velocity over the second
+                // half, against the mean of g (sin - f(v) cos) over it
+                const unsigned int first = samples.size() / 2;
+                double st = 0, sv = 0, stt = 0, stv = 0, a_ref = 0;
+                for (unsigned int i = first; i < samples.size(); ++i)
+                  {
+                    const double t = samples[i].t, v = samples[i].block_momentum[0] / m_block;
+                    st += t;
+                    sv += v;
+                    stt += t * t;
+                    stv += t * v;
+                    a_ref += gn * (std::sin(theta) - law->coefficient(std::abs(v)) * std::cos(theta));
+                  }
+                const double n = samples.size() - first;
+                const double a = (n * stv - st * sv) / (n * stt - st * st);
+                a_ref /= n;
+                pcout << "  sliding: mean velocity " << fmt(sv / n, 4) << " m/s, f at it "
+                      << fmt(law->coefficient(std::abs(sv / n)), 5) << std::endl;
+                result("sliding acceleration g (sin theta - f(v) cos theta)", a, a_ref, "m/s^2", 1.);
+              }
+          }
+        else if (vp.check == "tangential sliding")
+          {
+            const unsigned int first = 3 * samples.size() / 4;
+            double             ratio = 0;
+            for (unsigned int i = first; i < samples.size(); ++i)
+              {
+                const Tensor<1, dim> F = samples[i].contact_force;
+                const double fn        = F[2];
+                const double v         = samples[i].block_momentum[0] / m_block;
+                ratio += std::abs(F[0]) / (law->coefficient(std::abs(v)) * fn);
+              }
+            ratio /= samples.size() - first;
+            const Sample &end = samples.back();
+            pcout << "  friction force / (f F_N), mean over the last quarter: " << fmt(ratio, 5)
+                  << std::endl;
+            result("friction force saturates at f F_N", ratio, 1., "", 1.);
+            result("friction dissipation = applied work - kinetic energy",
+                   end.friction,
+                   end.external_work - end.kinetic,
+                   "J",
+                   1.);
+          }
+        else
+          {
+            const Tensor<1, dim> p0 = samples.front().block_momentum + samples.front().plate_momentum;
+            const Tensor<1, dim> p1 = samples.back().block_momentum + samples.back().plate_momentum;
+            const double         dp = (p1 - p0).norm() / p0.norm();
+            unsigned int         max_contact = 0;
+            for (const auto &s : samples)
+              max_contact = std::max(max_contact, s.n_contact);
+            const double e0 = samples.front().total, e1 = samples.back().total;
+            pcout << "  momentum before " << fmt(p0[2], 6) << " kg m/s, after " << fmt(p1[2], 6)
+                  << " kg m/s, relative change " << fmt(dp, 2) << std::endl
+                  << "  largest number of contact nodes " << max_contact << ", at the end "
+                  << samples.back().n_contact << "; block velocity after "
+                  << fmt(samples.back().block_momentum[2] / m_block, 4) << " m/s" << std::endl
+                  << "  energy: largest balance error " << fmt(max_balance_error, 2)
+                  << ", (total end - total start) / start " << fmt((e1 - e0) / std::abs(e0), 2)
+                  << std::endl
+                  << "  within tolerance: "
+                  << (dp < 1e-6 && max_contact > 0 && samples.back().n_contact == 0 &&
+                          max_balance_error <= vp.tolerance ?
+                        "yes" :
+                        "no")
+                  << std::endl;
+          }
       }
     else if (vp.check == "energy balance")
       {

@@ -21,7 +21,9 @@
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <wheelrail/contact.h>
 #include <wheelrail/parameters.h>
 
 #include <functional>
@@ -43,13 +45,15 @@ namespace WheelRail
      *  also when the control is off: shows spurious modes. */
     double hourglass_reference = 0;
     double damping             = 0; ///< dissipated by damping, accumulated
-    double external_work       = 0; ///< gravity and prescribed boundaries
+    double contact             = 0; ///< stored in the penalty springs
+    double friction            = 0; ///< dissipated by friction, accumulated
+    double external_work       = 0; ///< gravity, applied forces, prescribed boundaries
 
-    /** KE + IE + HG + D - W_ext. */
+    /** KE + IE + HG + D + contact + friction - W_ext. */
     double
     total() const
     {
-      return kinetic + internal + hourglass + damping - external_work;
+      return kinetic + internal + hourglass + damping + contact + friction - external_work;
     }
   };
 
@@ -117,13 +121,54 @@ namespace WheelRail
     set_velocity(const std::function<Tensor<1, dim>(const Point<dim> &,
                                                     const types::material_id)> &v_of_X);
 
+    /** Let @p contact add its forces in every step (nullptr: none). */
+    void
+    attach_contact(PenaltyContact *contact)
+    {
+      this->contact = contact;
+    }
+    /** Set the displacement of the DoFs of material @p material from a
+     *  vector with the same layout (e.g. a static solution). */
+    void
+    set_displacement(const VectorType &displacement);
+    /** f_int(u) - f_contact(u) (frictionless) - f_ext, condensed and compressed. */
+    void
+    compute_residual(VectorType &residual);
+    /** Momentum (from v at t_{n-1/2}) of the cells of @p material [kg m/s]. */
+    Tensor<1, dim>
+    momentum(const types::material_id material) const;
+    /** Mean displacement of the nodes of @p material [m]. */
+    Tensor<1, dim>
+    mean_displacement(const types::material_id material) const;
+    const VectorType &
+    lumped_mass() const
+    {
+      return mass;
+    }
+    /** The prescribed DoFs (owned, local indices); kind 0 fixed, 1 velocity, 2 axle. */
+    std::vector<std::pair<unsigned int, unsigned int>>
+    prescribed_dofs() const;
+    const AffineConstraints<double> &
+    get_hanging_constraints() const
+    {
+      return hanging_constraints;
+    }
+    /**
+     * Assemble the stiffness of the one-point element with hourglass
+     * control at u = 0 (the small-strain tangent) into @p matrix through
+     * @p constraints, one cell at a time.
+     */
+    void
+    assemble_stiffness(TrilinosWrappers::SparseMatrix &  matrix,
+                       const AffineConstraints<double> &constraints) const;
+
     /** One central-difference step; energies at t_n if @p energies. */
     void
     step(Energies *energies = nullptr);
 
     /** Internal force f_int(u) without damping, condensed and compressed. */
     void
-    compute_internal_force(VectorType &force) const;
+    compute_internal_force(VectorType &force);
 
     /** Stress of every locally owned cell (in active cell index order). */
     std::vector<CellStress>
@@ -197,9 +242,16 @@ namespace WheelRail
     setup_mass_and_loads();
     void
     setup_prescribed_dofs();
-    /** f = f_int(u) + f_damp(v); returns the damping power. */
+    /** f = f_int(u) + f_damp(v) - f_contact(u); returns the damping power.
+     *  Contact is evaluated for a step (friction advanced) if @p advance. */
     double
-    assemble_forces(const VectorType &u, const VectorType *v, VectorType &f) const;
+    assemble_forces(const VectorType &u,
+                    const VectorType *v,
+                    VectorType &      f,
+                    const bool        with_contact,
+                    const bool        advance);
+    void
+    setup_applied_forces();
     /** Add hanging-node entries of @p f to their masters and zero them. */
     void
     condense(VectorType &f) const;
@@ -252,6 +304,10 @@ namespace WheelRail
     };
     std::vector<PrescribedDof>            prescribed;
     std::unique_ptr<Function<dim>>        prescribed_velocity;
+    /** Applied-force DoFs: local index, component, area fraction. */
+    std::vector<std::tuple<unsigned int, unsigned int, double>> applied;
+    std::unique_ptr<Function<dim>>                              applied_force;
+    PenaltyContact *                                            contact = nullptr;
 
     VectorType u, v, f, v_old;
     double     t          = 0;

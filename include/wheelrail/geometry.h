@@ -29,6 +29,12 @@ namespace WheelRail
       constexpr types::boundary_id bar_side    = 20;
       constexpr types::boundary_id bar_start   = 21; ///< x = 0
       constexpr types::boundary_id bar_end     = 22; ///< x = L
+      constexpr types::boundary_id block_bottom = 30;
+      constexpr types::boundary_id block_top    = 31;
+      constexpr types::boundary_id block_side   = 32;
+      constexpr types::boundary_id plate_top    = 40;
+      constexpr types::boundary_id plate_bottom = 41;
+      constexpr types::boundary_id plate_side   = 42;
     } // namespace BoundaryIds
 
     /** Material ids: which body a cell belongs to. */
@@ -37,6 +43,8 @@ namespace WheelRail
       constexpr types::material_id wheel = 1;
       constexpr types::material_id rail  = 2;
       constexpr types::material_id bar   = 3;
+      constexpr types::material_id block = 4;
+      constexpr types::material_id plate = 5;
     } // namespace MaterialIds
 
     /** Manifold ids. */
@@ -47,7 +55,8 @@ namespace WheelRail
     } // namespace ManifoldIds
 
     /**
-     * Build the coarse mesh of @p geometry_type ("wheel and rail" or "bar"),
+     * Build the coarse mesh of @p geometry_type ("wheel and rail", "bar" or
+     * "block on plate"),
      * attach manifolds and refine locally as GeometryParameters says.
      */
     void

@@ -76,6 +76,13 @@ namespace WheelRail
     double              bar_height;
     std::vector<unsigned int> bar_cells;
     double              bar_distortion;
+    // block on plate (contact verification geometry)
+    Tensor<1, 3>              plate_size;
+    std::vector<unsigned int> plate_cells;
+    Tensor<1, 3>              block_size;
+    std::vector<unsigned int> block_cells;
+    double                    block_x;
+    double                    block_gap;
 
     /** Height of the undeformed wheel centre above O. */
     double
@@ -146,6 +153,46 @@ namespace WheelRail
     std::string prescribed_velocity_constants;
     /** "free", "fixed" or "spinning axle" for the wheel bore. */
     std::string wheel_bore;
+    /** Boundary ids loaded by the applied force (empty = none). */
+    std::vector<types::boundary_id> applied_force_ids;
+    /** Total force "Fx; Fy; Fz" [N] as functions of t, spread by area. */
+    std::string applied_force_expression;
+    std::string applied_force_constants;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Penalty node-to-segment contact and friction (SPEC 4). */
+  struct ContactParameters
+  {
+    bool               enabled;
+    types::boundary_id slave_boundary;
+    types::boundary_id master_boundary;
+    bool               two_pass;
+    double             penalty_scale;
+    double             tangential_factor;
+    double             damping_ratio;
+    unsigned int       search_interval;
+    double             search_margin;
+    double             rebuild_fraction;
+    std::string        friction_law;
+    double             static_coefficient;
+    double             dynamic_coefficient;
+    double             decay;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
+  /** The implicit static contact solve (SPEC 5.2). */
+  struct StaticParameters
+  {
+    double       axle_load;
+    double       load_tolerance;
+    double       newton_tolerance;
+    unsigned int max_newton_iterations;
+    double       linear_tolerance;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
@@ -214,6 +261,8 @@ namespace WheelRail
     SolverParameters       solver;
     BoundaryParameters     boundary;
     InitialParameters      initial;
+    ContactParameters      contact;
+    StaticParameters       statics;
     OutputParameters       output;
     VerificationParameters verification;
 

@@ -11,6 +11,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <wheelrail/contact.h>
 #include <wheelrail/explicit_solver.h>
 #include <wheelrail/parameters.h>
 
@@ -40,6 +41,14 @@ namespace WheelRail
     print_setup_summary();
     void
     run_static_check();
+    void
+    run_static_contact();
+    /** Per-node contact state of the slave surface as CSV (SPEC 6 columns). */
+    void
+    write_contact_nodes(const std::string &name) const;
+    /** Record the sample of the contact checks at a statistics step. */
+    void
+    record_sample(const Energies &e);
     void
     run_explicit();
     void
@@ -71,6 +80,7 @@ namespace WheelRail
     ConditionalOStream                        pcout;
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<ExplicitSolver>           solver;
+    std::unique_ptr<PenaltyContact>           contact;
     std::string                               output_directory;
 
     TableHandler statistics;
@@ -90,6 +100,19 @@ namespace WheelRail
     double       hourglass_ref_time_integral = 0;
     double       internal_time_integral = 0;
     double       max_hourglass_ratio_actual = 0;
+
+    /** Time series for the contact checks (block on plate). */
+    struct Sample
+    {
+      double         t;
+      Tensor<1, dim> block_momentum, plate_momentum, block_displacement, contact_force;
+      Tensor<1, dim> relative_displacement; ///< block relative to the plate under it
+      unsigned int   n_contact;
+      double         kinetic, external_work, friction, total;
+      double         tangential_stiffness; ///< sum of k_t over the contact pairs
+    };
+    std::vector<Sample> samples;
+    unsigned long       friction_violations = 0;
   };
 } // namespace WheelRail
 

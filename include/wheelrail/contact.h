@@ -1,0 +1,236 @@
+/**
+ * @file contact.h
+ * Penalty node-to-segment contact with friction (SPEC 4): slave nodes on one
+ * boundary against the bilinear faces of another, LS-DYNA style.
+ *
+ * Parallel design: the contact computation is replicated. Every rank knows
+ * the list of all slave nodes and master faces (small: surfaces only). At a
+ * search, the current positions of all contact nodes are gathered and the
+ * candidate slaves and faces (within the search margin) are chosen; at every
+ * step only the candidates' positions are gathered (one allgatherv), and
+ * every rank computes all contact forces in the same order. Each rank then
+ * adds the forces of the DoFs it owns. Results are therefore independent of
+ * the number of ranks, and a slave node and its master face may live on any
+ * ranks.
+ */
+#ifndef wheelrail_contact_h
+#define wheelrail_contact_h
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <wheelrail/friction_law.h>
+#include <wheelrail/parameters.h>
+
+#include <memory>
+#include <vector>
+
+namespace WheelRail
+{
+  /** State of one slave node, available to output and post-processing. */
+  struct ContactNodeState
+  {
+    Point<dim>     X;            ///< reference position [m]
+    Point<dim>     x;            ///< current position [m]
+    double         area = 0;     ///< tributary area [m^2]
+    bool           in_contact = false; ///< normal nodal force > 0 (paper eq. 4)
+    double         gap          = 0;   ///< n.(x_s - x_c) [m], < 0 = penetration
+    Tensor<1, dim> normal;             ///< outward normal of the master face
+    double         normal_force = 0;   ///< |F_n| [N]
+    Tensor<1, dim> tangential_force;   ///< F_t on the slave [N]
+    double         slip_velocity = 0;  ///< micro-slip s_n = |de| / dt [m/s]
+    double         cof           = 0;  ///< local coefficient of friction
+    bool           slipping      = false; ///< the return map was active
+    /** Friction memory: master face and face coordinates of the contact point. */
+    int    face = -1;
+    double xi = 0, eta = 0;
+    double     mass = 0;   ///< lumped nodal mass (contact damping) [kg]
+    Point<dim> x_previous; ///< position at the previous step
+    double     gap_previous = 0;
+
+    double
+    pressure() const
+    {
+      return area > 0 ? normal_force / area : 0.;
+    }
+  };
+
+  /** An active slave/master pair for the implicit tangent. */
+  struct ContactPair
+  {
+    types::global_dof_index slave;     ///< x-DoF of the slave node
+    types::global_dof_index master[4]; ///< x-DoFs of the face corners
+    double                  shape[4];  ///< N_j at the contact point
+    Tensor<1, dim>          normal;
+    double                  stiffness; ///< penalty k [N/m]
+  };
+
+  /** Totals over all slave nodes. */
+  struct ContactSummary
+  {
+    Tensor<1, dim> force;          ///< on the slave body [N]
+    unsigned int   n_contact   = 0; ///< nodes with F_n > 0
+    unsigned int   n_slip      = 0; ///< nodes where the return map was active
+    unsigned int   n_violation = 0; ///< |F_t| > f |F_n| (must stay 0)
+    double         elastic_energy = 0; ///< 1/2 k g^2 + 1/2 |F_t|^2 / k_t [J]
+    double         max_penetration = 0; ///< [m]
+    /** Mean over the contact nodes of the slave's displacement relative to
+     *  the material point of the master under it [m]: elastic spring
+     *  extension plus accumulated slip. */
+    Tensor<1, dim> relative_displacement;
+  };
+
+  /**
+   * Penalty contact between the slave boundary and the master boundary
+   * (and back, with two-pass contact).
+   */
+  class PenaltyContact
+  {
+  public:
+    PenaltyContact(const ContactParameters & contact,
+                   const MaterialParameters &material,
+                   MPI_Comm                  comm);
+
+    /** Collect slave nodes and master faces of the mesh. */
+    void
+    setup(const DoFHandler<dim> &                                    dof_handler,
+          const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+          const LinearAlgebra::distributed::Vector<double> &        lumped_mass);
+
+    /**
+     * Add the contact forces for the displacement @p u (ghosted) to the
+     * owned entries of @p f, with the sign of internal forces (f -= f_c).
+     * With @p advance the friction state and the micro-slip are updated for
+     * a step of length @p dt; without, friction is left out (static solve).
+     */
+    void
+    add_forces(const LinearAlgebra::distributed::Vector<double> &u,
+               const double                                      dt,
+               const bool                                        advance,
+               LinearAlgebra::distributed::Vector<double> &      f);
+
+    /**
+     * For every candidate slave of the last search: its x-DoF followed by the
+     * x-DoFs of the corners of its candidate faces (for a sparsity pattern
+     * that covers every pair the static solve can activate).
+     */
+    std::vector<std::vector<types::global_dof_index>>
+    candidate_couplings() const;
+
+    /** Active pairs of the last add_forces() (replicated on all ranks). */
+    const std::vector<ContactPair> &
+    active_pairs() const
+    {
+      return pairs;
+    }
+    /** Slave node states of the first pass (replicated on all ranks). */
+    const std::vector<ContactNodeState> &
+    slave_states() const
+    {
+      return passes.front().slaves;
+    }
+    /** Totals of the last add_forces(). */
+    const ContactSummary &
+    summary() const
+    {
+      return totals;
+    }
+    /** Energy dissipated by contact damping so far [J]. */
+    double
+    damping_dissipation() const
+    {
+      return damping_loss;
+    }
+    /** Friction dissipation accumulated so far [J]. */
+    double
+    friction_dissipation() const
+    {
+      return dissipation;
+    }
+    /** Number of candidate searches so far. */
+    unsigned int
+    n_searches() const
+    {
+      return searches;
+    }
+    /** Wall seconds spent in searches (candidate rebuilds) so far. */
+    double
+    search_seconds() const
+    {
+      return search_time;
+    }
+    const FrictionLaw *
+    friction_law() const
+    {
+      return law.get();
+    }
+
+  private:
+    struct MasterFace
+    {
+      unsigned int node[4];   ///< contact-node indices, lexicographic
+      double       stiffness; ///< k = SF K A^2 / V
+      double       sign;      ///< orientation making x_xi x x_eta outward
+    };
+    struct Pass
+    {
+      std::vector<unsigned int>     slave_node; ///< contact-node index per slave
+      std::vector<ContactNodeState> slaves;
+      std::vector<MasterFace>       faces;
+      std::vector<unsigned int>     candidate_slaves;
+      std::vector<unsigned int>     candidate_faces;
+      std::vector<unsigned int>     face_offsets; ///< CSR: slave -> faces
+      std::vector<unsigned int>     face_lists;
+    };
+
+    void
+    collect_pass(const DoFHandler<dim> &  dof_handler,
+                 const types::boundary_id slave_id,
+                 const types::boundary_id master_id,
+                 Pass &                   pass);
+    unsigned int
+    node_index(const types::global_dof_index dof, const Point<dim> &X);
+    void
+    search(const LinearAlgebra::distributed::Vector<double> &u);
+    void
+    gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
+                     const std::vector<unsigned int> &                 nodes);
+    void
+    compute_pass(Pass &pass, const double dt, const bool advance);
+
+    const ContactParameters &prm;
+    MPI_Comm                 mpi_communicator;
+    std::unique_ptr<FrictionLaw> law;
+    double                       bulk_modulus;
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+
+    // contact nodes: slaves and face corners of all passes (replicated)
+    std::vector<types::global_dof_index> node_dof;
+    std::vector<Point<dim>>              node_X;
+    std::vector<Point<dim>>              node_x;       ///< current positions
+    std::vector<Point<dim>>              node_x_search; ///< at the last search
+    std::vector<Tensor<1, dim>>          node_normal; ///< averaged master normals
+    std::vector<unsigned int>            active_nodes;  ///< gathered every step
+    std::vector<int>                     recv_counts, recv_displs;
+    std::vector<unsigned int>            recv_order; ///< node of each received item
+    std::vector<unsigned int>            owned_active;  ///< this rank's part
+    std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
+
+    std::vector<Pass>        passes;
+    std::vector<ContactPair> pairs;
+    ContactSummary           totals;
+    double                   dissipation  = 0;
+    double                   damping_loss = 0;
+    unsigned long            steps_since_search = 0;
+    bool                     need_search        = true;
+    unsigned int             searches           = 0;
+    double                   search_time        = 0;
+  };
+} // namespace WheelRail
+
+#endif

@@ -1,0 +1,682 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
+#include <wheelrail/contact.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace WheelRail
+{
+  std::unique_ptr<FrictionLaw>
+  FrictionLaw::create(const std::string &name,
+                      const double       static_coefficient,
+                      const double       dynamic_coefficient,
+                      const double       decay)
+  {
+    if (name == "constant")
+      return std::make_unique<ConstantFriction>(static_coefficient);
+    if (name == "exponential")
+      return std::make_unique<ExponentialFriction>(static_coefficient, dynamic_coefficient, decay);
+    AssertThrow(false, ExcMessage("Unknown friction law '" + name + "' (known: " + names() + ")."));
+    return nullptr;
+  }
+
+
+
+  namespace
+  {
+    namespace bg  = boost::geometry;
+    namespace bgi = boost::geometry::index;
+    using BoostPoint = bg::model::point<double, 3, bg::cs::cartesian>;
+    using BoostBox   = bg::model::box<BoostPoint>;
+
+    bool
+    lexicographic_less(const Point<dim> &a, const Point<dim> &b)
+    {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (a[d] != b[d])
+          return a[d] < b[d];
+      return false;
+    }
+
+    /** Bilinear face x(xi, eta) on corners p[0..3] (lexicographic). */
+    struct BilinearFace
+    {
+      const Point<dim> *p[4];
+
+      void
+      evaluate(const double    xi,
+               const double    eta,
+               Point<dim> &    x,
+               Tensor<1, dim> &dxi,
+               Tensor<1, dim> &deta,
+               double          N[4]) const
+      {
+        N[0] = 0.25 * (1 - xi) * (1 - eta);
+        N[1] = 0.25 * (1 + xi) * (1 - eta);
+        N[2] = 0.25 * (1 - xi) * (1 + eta);
+        N[3] = 0.25 * (1 + xi) * (1 + eta);
+        x    = Point<dim>();
+        for (unsigned int j = 0; j < 4; ++j)
+          x += N[j] * (*p[j]);
+        dxi  = 0.25 * ((1 - eta) * (*p[1] - *p[0]) + (1 + eta) * (*p[3] - *p[2]));
+        deta = 0.25 * ((1 - xi) * (*p[2] - *p[0]) + (1 + xi) * (*p[3] - *p[1]));
+      }
+
+      /** Closest point by Newton (Gauss-Newton) in the face coordinates. */
+      void
+      project(const Point<dim> &xs, double &xi, double &eta) const
+      {
+        xi = eta = 0;
+        Point<dim>     x;
+        Tensor<1, dim> dxi, deta;
+        double         N[4];
+        for (unsigned int it = 0; it < 20; ++it)
+          {
+            evaluate(xi, eta, x, dxi, deta, N);
+            const Tensor<1, dim> r   = x - xs;
+            const double         a11 = dxi * dxi, a12 = dxi * deta, a22 = deta * deta;
+            const double         b1 = dxi * r, b2 = deta * r;
+            const double         det = a11 * a22 - a12 * a12;
+            if (!(det > 0))
+              break;
+            const double dx = -(a22 * b1 - a12 * b2) / det;
+            const double de = -(a11 * b2 - a12 * b1) / det;
+            xi              = std::clamp(xi + dx, -3., 3.);
+            eta             = std::clamp(eta + de, -3., 3.);
+            if (std::abs(dx) + std::abs(de) < 1e-13)
+              break;
+          }
+      }
+    };
+  } // namespace
+
+
+
+  PenaltyContact::PenaltyContact(const ContactParameters & contact,
+                                 const MaterialParameters &material,
+                                 MPI_Comm                  comm)
+    : prm(contact)
+    , mpi_communicator(comm)
+    , bulk_modulus(material.lambda() + 2. / 3. * material.mu())
+  {
+    if (prm.friction_law != "none")
+      law = FrictionLaw::create(prm.friction_law,
+                                prm.static_coefficient,
+                                prm.dynamic_coefficient,
+                                prm.decay);
+  }
+
+
+
+  unsigned int
+  PenaltyContact::node_index(const types::global_dof_index dof, const Point<dim> &X)
+  {
+    const auto it = std::lower_bound(dof_to_node.begin(),
+                                     dof_to_node.end(),
+                                     std::make_pair(dof, 0u),
+                                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    if (it != dof_to_node.end() && it->first == dof)
+      return it->second;
+    const unsigned int index = node_dof.size();
+    node_dof.push_back(dof);
+    node_X.push_back(X);
+    dof_to_node.insert(it, std::make_pair(dof, index));
+    return index;
+  }
+
+
+
+  void
+  PenaltyContact::collect_pass(const DoFHandler<dim> &  dof_handler,
+                               const types::boundary_id slave_id,
+                               const types::boundary_id master_id,
+                               Pass &                   pass)
+  {
+    // local contributions, packed as doubles for one all_gather each:
+    // slaves (dof, X, partial area), faces (4 dofs, 4 X, k, sign)
+    std::vector<double> slaves, faces;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto     face = cell->face(f);
+              const double   area =
+                0.5 * cross_product_3d(face->vertex(3) - face->vertex(0),
+                                       face->vertex(2) - face->vertex(1))
+                        .norm();
+              if (face->boundary_id() == slave_id)
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    slaves.push_back(face->vertex_dof_index(v, 0));
+                    for (unsigned int d = 0; d < dim; ++d)
+                      slaves.push_back(face->vertex(v)[d]);
+                    slaves.push_back(0.25 * area);
+                  }
+              if (face->boundary_id() == master_id)
+                {
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      faces.push_back(face->vertex_dof_index(v, 0));
+                      for (unsigned int d = 0; d < dim; ++d)
+                        faces.push_back(face->vertex(v)[d]);
+                    }
+                  const Tensor<1, dim> n = cross_product_3d(face->vertex(1) - face->vertex(0),
+                                                            face->vertex(2) - face->vertex(0));
+                  faces.push_back(prm.penalty_scale * bulk_modulus * area * area / cell->measure());
+                  faces.push_back(n * (face->center() - cell->center()) > 0 ? 1. : -1.);
+                }
+            }
+
+    // slaves: sum the partial areas of shared nodes, order by position
+    std::map<types::global_dof_index, std::pair<Point<dim>, double>> slave_map;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, slaves))
+      for (unsigned int i = 0; i < part.size(); i += 5)
+        {
+          auto &entry = slave_map[static_cast<types::global_dof_index>(part[i])];
+          entry.first = Point<dim>(part[i + 1], part[i + 2], part[i + 3]);
+          entry.second += part[i + 4];
+        }
+    std::vector<std::tuple<Point<dim>, types::global_dof_index, double>> sorted_slaves;
+    for (const auto &s : slave_map)
+      sorted_slaves.emplace_back(s.second.first, s.first, s.second.second);
+    std::sort(sorted_slaves.begin(), sorted_slaves.end(), [](const auto &a, const auto &b) {
+      return lexicographic_less(std::get<0>(a), std::get<0>(b));
+    });
+    for (const auto &s : sorted_slaves)
+      {
+        ContactNodeState state;
+        state.X    = std::get<0>(s);
+        state.x    = state.X;
+        state.area = std::get<2>(s);
+        pass.slave_node.push_back(node_index(std::get<1>(s), state.X));
+        pass.slaves.push_back(state);
+      }
+
+    // faces, ordered by centroid
+    std::vector<std::pair<Point<dim>, std::vector<double>>> sorted_faces;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, faces))
+      for (unsigned int i = 0; i < part.size(); i += 18)
+        {
+          Point<dim> c;
+          for (unsigned int v = 0; v < 4; ++v)
+            c += 0.25 * Point<dim>(part[i + 4 * v + 1], part[i + 4 * v + 2], part[i + 4 * v + 3]);
+          sorted_faces.emplace_back(c, std::vector<double>(part.begin() + i, part.begin() + i + 18));
+        }
+    std::sort(sorted_faces.begin(), sorted_faces.end(), [](const auto &a, const auto &b) {
+      return lexicographic_less(a.first, b.first);
+    });
+    for (const auto &f : sorted_faces)
+      {
+        MasterFace face;
+        for (unsigned int v = 0; v < 4; ++v)
+          face.node[v] = node_index(static_cast<types::global_dof_index>(f.second[4 * v]),
+                                    Point<dim>(f.second[4 * v + 1], f.second[4 * v + 2], f.second[4 * v + 3]));
+        face.stiffness = f.second[16];
+        face.sign      = f.second[17];
+        pass.faces.push_back(face);
+      }
+  }
+
+
+
+  void
+  PenaltyContact::setup(const DoFHandler<dim> &                                    dof_handler,
+                        const std::shared_ptr<const Utilities::MPI::Partitioner> &vector_partitioner,
+                        const LinearAlgebra::distributed::Vector<double> &        lumped_mass)
+  {
+    partitioner = vector_partitioner;
+    node_dof.clear();
+    node_X.clear();
+    dof_to_node.clear();
+    passes.clear();
+    passes.resize(prm.two_pass ? 2 : 1);
+    collect_pass(dof_handler, prm.slave_boundary, prm.master_boundary, passes[0]);
+    if (prm.two_pass)
+      collect_pass(dof_handler, prm.master_boundary, prm.slave_boundary, passes[1]);
+    AssertThrow(!passes[0].slaves.empty(),
+                ExcMessage("Contact/Slave boundary " + std::to_string(prm.slave_boundary) +
+                           " has no faces in this geometry."));
+    AssertThrow(!passes[0].faces.empty(),
+                ExcMessage("Contact/Master boundary " + std::to_string(prm.master_boundary) +
+                           " has no faces in this geometry."));
+    // nodal masses of the slaves (for contact damping), replicated
+    std::vector<double> owned_mass(node_dof.size(), 0.), mass(node_dof.size(), 0.);
+    for (unsigned int n = 0; n < node_dof.size(); ++n)
+      if (partitioner->in_local_range(node_dof[n]))
+        owned_mass[n] = lumped_mass.local_element(partitioner->global_to_local(node_dof[n]));
+    Utilities::MPI::sum(owned_mass, mpi_communicator, mass);
+    for (Pass &pass : passes)
+      for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+        {
+          pass.slaves[s].mass       = mass[pass.slave_node[s]];
+          pass.slaves[s].x_previous = pass.slaves[s].X;
+        }
+    node_x        = node_X;
+    node_x_search = node_X;
+    need_search   = true;
+    dissipation   = 0;
+    damping_loss  = 0;
+    searches      = 0;
+    search_time   = 0;
+  }
+
+
+
+  void
+  PenaltyContact::gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
+                                   const std::vector<unsigned int> &                 nodes)
+  {
+    std::vector<double> send;
+    send.reserve(4 * nodes.size());
+    for (const unsigned int n : nodes)
+      if (partitioner->in_local_range(node_dof[n]))
+        {
+          const unsigned int i = partitioner->global_to_local(node_dof[n]);
+          send.push_back(n);
+          for (unsigned int d = 0; d < dim; ++d)
+            send.push_back(node_X[n][d] + u.local_element(i + d));
+        }
+    const int  n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    int        count   = send.size();
+    std::vector<int> counts(n_ranks), displs(n_ranks, 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_communicator);
+    for (int r = 1; r < n_ranks; ++r)
+      displs[r] = displs[r - 1] + counts[r - 1];
+    std::vector<double> recv(displs.back() + counts.back());
+    MPI_Allgatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(), displs.data(),
+                   MPI_DOUBLE, mpi_communicator);
+    for (unsigned int i = 0; i < recv.size(); i += 4)
+      node_x[static_cast<unsigned int>(recv[i])] = Point<dim>(recv[i + 1], recv[i + 2], recv[i + 3]);
+  }
+
+
+
+  void
+  PenaltyContact::search(const LinearAlgebra::distributed::Vector<double> &u)
+  {
+    Timer timer;
+    std::vector<unsigned int> all(node_dof.size());
+    for (unsigned int i = 0; i < all.size(); ++i)
+      all[i] = i;
+    gather_positions(u, all);
+    node_x_search = node_x;
+
+    const double margin = prm.search_margin;
+    std::vector<bool> active(node_dof.size(), false);
+    for (Pass &pass : passes)
+      {
+        // rtree of the master faces' boxes grown by the margin
+        std::vector<std::pair<BoostBox, unsigned int>> boxes;
+        for (unsigned int f = 0; f < pass.faces.size(); ++f)
+          {
+            Point<dim> lo = node_x[pass.faces[f].node[0]], hi = lo;
+            for (unsigned int v = 1; v < 4; ++v)
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  lo[d] = std::min(lo[d], node_x[pass.faces[f].node[v]][d]);
+                  hi[d] = std::max(hi[d], node_x[pass.faces[f].node[v]][d]);
+                }
+            boxes.emplace_back(BoostBox(BoostPoint(lo[0] - margin, lo[1] - margin, lo[2] - margin),
+                                        BoostPoint(hi[0] + margin, hi[1] + margin, hi[2] + margin)),
+                               f);
+          }
+        const bgi::rtree<std::pair<BoostBox, unsigned int>, bgi::quadratic<16>> tree(boxes);
+
+        std::vector<bool> was_candidate(pass.slaves.size(), false);
+        for (const unsigned int s : pass.candidate_slaves)
+          was_candidate[s] = true;
+        pass.candidate_slaves.clear();
+        pass.face_offsets.assign(1, 0);
+        pass.face_lists.clear();
+        std::vector<bool> face_used(pass.faces.size(), false);
+        std::vector<std::pair<BoostBox, unsigned int>> hits;
+        for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+          {
+            const Point<dim> &x = node_x[pass.slave_node[s]];
+            hits.clear();
+            tree.query(bgi::intersects(BoostPoint(x[0], x[1], x[2])), std::back_inserter(hits));
+            if (hits.empty())
+              {
+                // out of reach: no contact and no friction memory
+                pass.slaves[s].in_contact       = false;
+                pass.slaves[s].normal_force     = 0;
+                pass.slaves[s].tangential_force = Tensor<1, dim>();
+                pass.slaves[s].face             = -1;
+                continue;
+              }
+            std::vector<unsigned int> list;
+            for (const auto &h : hits)
+              list.push_back(h.second);
+            std::sort(list.begin(), list.end());
+            pass.candidate_slaves.push_back(s);
+            active[pass.slave_node[s]] = true;
+            if (!was_candidate[s])
+              pass.slaves[s].x_previous = x;
+            for (const unsigned int f : list)
+              {
+                pass.face_lists.push_back(f);
+                if (!face_used[f])
+                  {
+                    face_used[f] = true;
+                    for (unsigned int v = 0; v < 4; ++v)
+                      active[pass.faces[f].node[v]] = true;
+                  }
+              }
+            pass.face_offsets.push_back(pass.face_lists.size());
+          }
+        pass.candidate_faces.clear();
+        for (unsigned int f = 0; f < pass.faces.size(); ++f)
+          if (face_used[f])
+            pass.candidate_faces.push_back(f);
+        // friction memory on a face that left the candidates is lost
+        for (auto &s : pass.slaves)
+          if (s.face >= 0 && !face_used[s.face])
+            {
+              s.face             = -1;
+              s.tangential_force = Tensor<1, dim>();
+            }
+      }
+    active_nodes.clear();
+    for (unsigned int n = 0; n < active.size(); ++n)
+      if (active[n])
+        active_nodes.push_back(n);
+    need_search        = false;
+    steps_since_search = 0;
+    ++searches;
+    search_time += timer.wall_time();
+  }
+
+
+
+  std::vector<std::vector<types::global_dof_index>>
+  PenaltyContact::candidate_couplings() const
+  {
+    std::vector<std::vector<types::global_dof_index>> result;
+    for (const Pass &pass : passes)
+      for (unsigned int c = 0; c < pass.candidate_slaves.size(); ++c)
+        {
+          std::vector<types::global_dof_index> dofs = {node_dof[pass.slave_node[pass.candidate_slaves[c]]]};
+          for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
+            for (unsigned int v = 0; v < 4; ++v)
+              dofs.push_back(node_dof[pass.faces[pass.face_lists[k]].node[v]]);
+          std::sort(dofs.begin() + 1, dofs.end());
+          dofs.erase(std::unique(dofs.begin() + 1, dofs.end()), dofs.end());
+          result.push_back(dofs);
+        }
+    return result;
+  }
+
+
+
+  void
+  PenaltyContact::add_forces(const LinearAlgebra::distributed::Vector<double> &u,
+                             const double                                      dt,
+                             const bool                                        advance,
+                             LinearAlgebra::distributed::Vector<double> &      f)
+  {
+    if (need_search || steps_since_search >= prm.search_interval)
+      search(u);
+    else
+      gather_positions(u, active_nodes);
+
+    // rebuild at the next step when a candidate moved too far
+    const double limit = prm.rebuild_fraction * prm.search_margin;
+    for (const unsigned int n : active_nodes)
+      if (node_x[n].distance_square(node_x_search[n]) > limit * limit)
+        {
+          need_search = true;
+          break;
+        }
+
+    // Averaged nodal normals of the candidate master faces: the normal is
+    // interpolated from them over a face, so that it, and the contact force,
+    // are continuous when a slave passes from one face to its neighbour
+    // (with face normals the force direction jumps at every edge).
+    node_normal.assign(node_dof.size(), Tensor<1, dim>());
+    for (const Pass &pass : passes)
+      for (const unsigned int f : pass.candidate_faces)
+        {
+          const MasterFace &face = pass.faces[f];
+          BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
+                                &node_x[face.node[2]], &node_x[face.node[3]]}};
+          for (unsigned int v = 0; v < 4; ++v)
+            {
+              Point<dim>     x;
+              Tensor<1, dim> dxi, deta;
+              double         N[4];
+              bf.evaluate((v & 1) ? 1. : -1., (v & 2) ? 1. : -1., x, dxi, deta, N);
+              node_normal[face.node[v]] += face.sign * cross_product_3d(dxi, deta);
+            }
+        }
+    for (auto &n : node_normal)
+      if (n.norm() > 0)
+        n /= n.norm();
+
+    pairs.clear();
+    totals = ContactSummary();
+    for (Pass &pass : passes)
+      compute_pass(pass, dt, advance);
+    if (totals.n_contact > 0)
+      totals.relative_displacement /= totals.n_contact;
+
+    // forces on the owned DoFs, with the sign of internal forces
+    for (const Pass &pass : passes)
+      for (const unsigned int s : pass.candidate_slaves)
+        {
+          const ContactNodeState &state = pass.slaves[s];
+          if (!state.in_contact)
+            continue;
+          const Tensor<1, dim> F = state.normal_force * state.normal + state.tangential_force;
+          const auto add = [&](const types::global_dof_index dof, const double weight) {
+            if (partitioner->in_local_range(dof))
+              {
+                const unsigned int i = partitioner->global_to_local(dof);
+                for (unsigned int d = 0; d < dim; ++d)
+                  f.local_element(i + d) -= weight * F[d];
+              }
+          };
+          add(node_dof[pass.slave_node[s]], 1.);
+          const MasterFace &face = pass.faces[state.face];
+          double            N[4];
+          Point<dim>        x;
+          Tensor<1, dim>    dxi, deta;
+          BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
+                                &node_x[face.node[2]], &node_x[face.node[3]]}};
+          bf.evaluate(state.xi, state.eta, x, dxi, deta, N);
+          for (unsigned int v = 0; v < 4; ++v)
+            add(node_dof[face.node[v]], -N[v]);
+        }
+    if (advance)
+      ++steps_since_search;
+  }
+
+
+
+  void
+  PenaltyContact::compute_pass(Pass &pass, const double dt, const bool advance)
+  {
+    const double margin = prm.search_margin;
+    for (unsigned int c = 0; c < pass.candidate_slaves.size(); ++c)
+      {
+        const unsigned int s     = pass.candidate_slaves[c];
+        ContactNodeState & state = pass.slaves[s];
+        const Point<dim> & xs    = node_x[pass.slave_node[s]];
+        state.x                  = xs;
+        const Point<dim> x_prev  = state.x_previous;
+        if (advance)
+          state.x_previous = xs;
+
+        // closest point over the candidate faces; a projection inside a
+        // face wins, otherwise the nearest face edge takes over
+        int            best_face = -1;
+        double         best_xi = 0, best_eta = 0, best_gap = 0, best_out = 1e300;
+        Tensor<1, dim> best_n;
+        double         best_N[4] = {0, 0, 0, 0};
+        for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
+          {
+            const MasterFace &face = pass.faces[pass.face_lists[k]];
+            BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
+                                  &node_x[face.node[2]], &node_x[face.node[3]]}};
+            double            xi, eta;
+            bf.project(xs, xi, eta);
+            const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
+            if (out > 0.1)
+              continue;
+            xi  = std::clamp(xi, -1., 1.);
+            eta = std::clamp(eta, -1., 1.);
+            Point<dim>     x;
+            Tensor<1, dim> dxi, deta;
+            double         N[4];
+            bf.evaluate(xi, eta, x, dxi, deta, N);
+            Tensor<1, dim> n;
+            for (unsigned int j = 0; j < 4; ++j)
+              n += N[j] * node_normal[face.node[j]];
+            n /= n.norm();
+            const double gap = n * (xs - x);
+            if (gap < -margin)
+              continue;
+            const double o      = std::max(out, 0.);
+            const bool   better = (o < best_out - 1e-12) ||
+                                (o <= best_out + 1e-12 && std::abs(gap) < std::abs(best_gap));
+            if (best_face < 0 || better)
+              {
+                best_face = pass.face_lists[k];
+                best_xi   = xi;
+                best_eta  = eta;
+                best_gap  = gap;
+                best_out  = o;
+                best_n    = n;
+                for (unsigned int j = 0; j < 4; ++j)
+                  best_N[j] = N[j];
+              }
+          }
+
+        state.gap = best_face >= 0 ? best_gap : 0.;
+        if (best_face < 0 || best_gap >= 0)
+          {
+            state.in_contact       = false;
+            state.normal_force     = 0;
+            state.tangential_force = Tensor<1, dim>();
+            state.slip_velocity    = 0;
+            state.slipping         = false;
+            if (advance)
+              state.face = -1;
+            continue;
+          }
+
+        const MasterFace &face = pass.faces[best_face];
+        const double      k    = face.stiffness;
+        state.in_contact       = true;
+        state.normal           = best_n;
+        state.normal_force     = -k * best_gap;
+        if (advance && prm.damping_ratio > 0 && state.face >= 0)
+          {
+            // viscous normal force on the closing rate of the gap; the
+            // total stays compressive
+            const double c    = 2. * prm.damping_ratio * std::sqrt(k * state.mass);
+            const double rate = (best_gap - state.gap_previous) / dt;
+            const double fd   = std::max(-c * rate, -state.normal_force);
+            state.normal_force += fd;
+            damping_loss += -fd * rate * dt;
+          }
+        totals.max_penetration = std::max(totals.max_penetration, -best_gap);
+        totals.elastic_energy += 0.5 * k * best_gap * best_gap;
+
+        if (law && advance)
+          {
+            const double kt = prm.tangential_factor * k;
+            // slip increment: the contact point now minus the old contact
+            // point on the current master geometry
+            Tensor<1, dim> de;
+            Tensor<1, dim> Ft_old;
+            if (state.face < 0)
+              {
+                // a new contact: the slip of this step is the motion of the
+                // slave relative to the face, from its previous position
+                // projected onto the same face
+                BilinearFace bn{{&node_x[face.node[0]], &node_x[face.node[1]],
+                                 &node_x[face.node[2]], &node_x[face.node[3]]}};
+                double       xi_p, eta_p;
+                bn.project(x_prev, xi_p, eta_p);
+                Point<dim>     x_old, x_new;
+                Tensor<1, dim> dxi, deta;
+                double         N[4];
+                bn.evaluate(xi_p, eta_p, x_old, dxi, deta, N);
+                bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
+                de = x_new - x_old;
+              }
+            else
+              {
+                const MasterFace &old = pass.faces[state.face];
+                BilinearFace      bf{{&node_x[old.node[0]], &node_x[old.node[1]],
+                                      &node_x[old.node[2]], &node_x[old.node[3]]}};
+                Point<dim>        x_old, x_new;
+                Tensor<1, dim>    dxi, deta;
+                double            N[4];
+                bf.evaluate(state.xi, state.eta, x_old, dxi, deta, N);
+                BilinearFace bn{{&node_x[face.node[0]], &node_x[face.node[1]],
+                                 &node_x[face.node[2]], &node_x[face.node[3]]}};
+                bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
+                de     = x_new - x_old;
+                Ft_old = state.tangential_force;
+              }
+            Tensor<1, dim> trial = Ft_old - kt * de;
+            trial -= (trial * best_n) * best_n;
+            state.slip_velocity  = de.norm() / dt;
+            state.cof            = law->coefficient(state.slip_velocity);
+            double lost            = 0;
+            state.tangential_force = return_map(trial, state.cof * state.normal_force, kt,
+                                                state.slipping, lost);
+            dissipation += lost;
+            totals.elastic_energy += 0.5 * state.tangential_force.norm_square() / kt;
+          }
+        else
+          {
+            // frictionless, or a static evaluation (no time step to slip in)
+            state.tangential_force = Tensor<1, dim>();
+            state.slip_velocity    = 0;
+            state.cof              = law ? law->coefficient(0.) : 0.;
+            state.slipping         = false;
+          }
+        state.face         = best_face;
+        state.xi           = best_xi;
+        state.eta          = best_eta;
+        state.gap_previous = best_gap;
+
+        const Tensor<1, dim> F = state.normal_force * best_n + state.tangential_force;
+        totals.force += F;
+        ++totals.n_contact;
+        {
+          Point<dim> X_c, x_c;
+          for (unsigned int j = 0; j < 4; ++j)
+            {
+              X_c += best_N[j] * node_X[face.node[j]];
+              x_c += best_N[j] * node_x[face.node[j]];
+            }
+          totals.relative_displacement += (xs - state.X) - (x_c - X_c);
+        }
+        if (state.slipping)
+          ++totals.n_slip;
+        if (law && state.tangential_force.norm() > state.cof * state.normal_force * (1 + 1e-12) + 1e-300)
+          ++totals.n_violation;
+
+        ContactPair pair;
+        pair.slave = node_dof[pass.slave_node[s]];
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            pair.master[v] = node_dof[face.node[v]];
+            pair.shape[v]  = best_N[v];
+          }
+        pair.normal    = best_n;
+        pair.stiffness = k;
+        pairs.push_back(pair);
+      }
+  }
+} // namespace WheelRail

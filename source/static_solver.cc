@@ -1,0 +1,262 @@
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <wheelrail/geometry.h>
+#include <wheelrail/static_solver.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace WheelRail
+{
+  StaticContactSolver::StaticContactSolver(const Parameters &parameters,
+                                           ExplicitSolver &  solver,
+                                           PenaltyContact &  contact,
+                                           MPI_Comm          comm)
+    : parameters(parameters)
+    , solver(solver)
+    , contact(contact)
+    , mpi_communicator(comm)
+  {
+    const DoFHandler<dim> &dof_handler = solver.get_dof_handler();
+    IndexSet               relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    const Functions::ZeroFunction<dim> zero(dim);
+    for (const auto &[id, components] : parameters.boundary.fixed)
+      {
+        std::vector<bool> mask(dim, false);
+        for (unsigned int d = 0; d < dim; ++d)
+          mask[d] = components.find("xyz"[d]) != std::string::npos;
+        VectorTools::interpolate_boundary_values(dof_handler, id, zero, constraints, ComponentMask(mask));
+      }
+    VectorTools::interpolate_boundary_values(dof_handler,
+                                             Geometry::BoundaryIds::wheel_bore,
+                                             zero,
+                                             constraints);
+    constraints.close();
+
+    bore_dofs = DoFTools::extract_boundary_dofs(dof_handler,
+                                                ComponentMask(),
+                                                {Geometry::BoundaryIds::wheel_bore});
+    bore_dofs = bore_dofs & dof_handler.locally_owned_dofs();
+    u.reinit(solver.partitioner());
+  }
+
+
+
+  double
+  StaticContactSolver::solve_at(const double delta, StaticResult &result, std::ostream &log)
+  {
+    const DoFHandler<dim> &dof_handler = solver.get_dof_handler();
+    const auto &           part        = *solver.partitioner();
+    const IndexSet &       owned       = dof_handler.locally_owned_dofs();
+
+    // the bore moves down rigidly by delta
+    const std::vector<unsigned char> component = [&]() {
+      std::vector<unsigned char> c(part.locally_owned_size());
+      const FiniteElement<dim> &fe = dof_handler.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (part.in_local_range(dofs[i]))
+                c[part.global_to_local(dofs[i])] = fe.system_to_component_index(i).first;
+          }
+      return c;
+    }();
+    for (const auto dof : bore_dofs)
+      {
+        const unsigned int i = part.global_to_local(dof);
+        u.local_element(i)   = (component[i] == 2) ? -delta : 0.;
+      }
+
+    VectorType     residual;
+    double         force      = 0;
+    double         previous_norm = std::numeric_limits<double>::max();
+    const double   load_scale = std::max(parameters.statics.axle_load, 1.);
+    unsigned int   last_searches = numbers::invalid_unsigned_int;
+    TrilinosWrappers::SparsityPattern sparsity;
+    TrilinosWrappers::SparseMatrix    matrix;
+    IndexSet                          relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+
+    for (unsigned int it = 0; it <= parameters.statics.max_newton_iterations; ++it)
+      {
+        solver.set_displacement(u);
+        solver.compute_residual(residual); // f_int - f_c - f_ext
+        force = contact.summary().force[2];
+        double norm = 0;
+        for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
+          if (!constraints.is_constrained(part.local_to_global(i)))
+            norm += residual.local_element(i) * residual.local_element(i);
+        norm = std::sqrt(Utilities::MPI::sum(norm, mpi_communicator));
+        log << "    Newton " << std::setw(2) << it << ": residual " << std::setprecision(3)
+            << std::scientific << norm / load_scale << std::defaultfloat << std::setprecision(6)
+            << ", contact nodes " << contact.summary().n_contact << ", contact force "
+            << force * 1e-3 << " kN" << std::endl;
+        if (norm <= parameters.statics.newton_tolerance * load_scale)
+          return force;
+        // A node projecting onto a face edge or corner makes the contact
+        // force non-smooth; Newton then stalls at a tiny residual. Accept a
+        // stalled iteration below 10 x the tolerance.
+        if (it > 2 && norm > 0.9 * previous_norm && norm <= 10 * parameters.statics.newton_tolerance * load_scale)
+          {
+            log << "    (stalled at " << norm / load_scale << " of the load: accepted)" << std::endl;
+            return force;
+          }
+        previous_norm = norm;
+        AssertThrow(it < parameters.statics.max_newton_iterations,
+                    ExcMessage("The static contact solve did not converge in Static solve/Max "
+                               "Newton iterations = " +
+                               std::to_string(parameters.statics.max_newton_iterations) +
+                               " iterations (residual " + std::to_string(norm / load_scale) +
+                               " of the load)."));
+        ++result.newton_iterations;
+
+        // sparsity: the mesh couplings and every candidate contact pair
+        if (contact.n_searches() != last_searches)
+          {
+            last_searches = contact.n_searches();
+            IndexSet writable = relevant;
+            const auto couplings = contact.candidate_couplings();
+            std::vector<types::global_dof_index> dofs;
+            for (const auto &c : couplings)
+              for (const auto node : c)
+                for (unsigned int d = 0; d < dim; ++d)
+                  writable.add_index(node + d);
+            writable.compress();
+            sparsity.reinit(owned, owned, writable, mpi_communicator);
+            DoFTools::make_sparsity_pattern(dof_handler, sparsity, constraints, false,
+                                            Utilities::MPI::this_mpi_process(mpi_communicator));
+            for (const auto &c : couplings)
+              if (part.in_local_range(c[0]))
+                {
+                  dofs.clear();
+                  for (const auto node : c)
+                    for (unsigned int d = 0; d < dim; ++d)
+                      dofs.push_back(node + d);
+                  constraints.add_entries_local_to_global(dofs, sparsity, false);
+                }
+            sparsity.compress();
+            matrix.reinit(sparsity);
+          }
+        else
+          matrix = 0;
+
+        solver.assemble_stiffness(matrix, constraints);
+        // contact tangent k (c c^T) (x) (n n^T), c = [1, -N_1, ..., -N_4]
+        FullMatrix<double>                   Kc(15, 15);
+        std::vector<types::global_dof_index> dofs(15);
+        for (const ContactPair &p : contact.active_pairs())
+          if (part.in_local_range(p.slave))
+            {
+              const double c[5] = {1., -p.shape[0], -p.shape[1], -p.shape[2], -p.shape[3]};
+              const types::global_dof_index node[5] = {p.slave, p.master[0], p.master[1],
+                                                       p.master[2], p.master[3]};
+              for (unsigned int a = 0; a < 5; ++a)
+                for (unsigned int i = 0; i < dim; ++i)
+                  {
+                    dofs[3 * a + i] = node[a] + i;
+                    for (unsigned int b = 0; b < 5; ++b)
+                      for (unsigned int j = 0; j < dim; ++j)
+                        Kc(3 * a + i, 3 * b + j) =
+                          p.stiffness * c[a] * c[b] * p.normal[i] * p.normal[j];
+                  }
+              constraints.distribute_local_to_global(Kc, dofs, matrix);
+            }
+        matrix.compress(VectorOperation::add);
+
+        TrilinosWrappers::MPI::Vector rhs(owned, mpi_communicator), du(owned, mpi_communicator);
+        for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
+          if (!constraints.is_constrained(part.local_to_global(i)))
+            rhs[part.local_to_global(i)] = -residual.local_element(i);
+        rhs.compress(VectorOperation::insert);
+
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+        amg_data.elliptic              = true;
+        amg_data.higher_order_elements = false;
+        amg_data.smoother_sweeps       = 2;
+        amg_data.aggregation_threshold = 0.02;
+        std::vector<std::vector<bool>> modes;
+        DoFTools::extract_constant_modes(dof_handler, ComponentMask(), modes);
+        amg_data.constant_modes = modes;
+        amg.initialize(matrix, amg_data);
+        SolverControl control(5000, parameters.statics.linear_tolerance * rhs.l2_norm());
+        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+        try
+          {
+            cg.solve(matrix, du, rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("CG with AMG did not converge in the static contact solve "
+                                   "(residual " + std::to_string(e.last_residual) +
+                                   " after " + std::to_string(e.last_step) +
+                                   " iterations): check the boundary conditions."));
+          }
+        result.linear_iterations += control.last_step();
+
+        // hanging DoFs of the increment follow their masters in set_displacement
+        for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+          if (!constraints.is_constrained(part.local_to_global(i)))
+            u.local_element(i) += du[part.local_to_global(i)];
+      }
+    return force;
+  }
+
+
+
+  StaticResult
+  StaticContactSolver::solve(const double target, std::ostream &log)
+  {
+    StaticResult result;
+    // first guess: the approach of a Hertzian contact of this size with
+    // 50 % added for the compliance of the bodies
+    double d0 = 1e-4 * std::pow(std::max(target, 1.) / 1.4e5, 2. / 3.);
+    log << "Static contact solve for a wheel load of " << target * 1e-3 << " kN" << std::endl;
+    log << "  axle displacement " << d0 * 1e6 << " um" << std::endl;
+    double F0 = solve_at(d0, result, log);
+    ++result.load_iterations;
+    double d1 = F0 > 0 ? d0 * std::pow(target / F0, 2. / 3.) : 2 * d0;
+    double F1 = F0;
+    for (unsigned int k = 0; k < 30; ++k)
+      {
+        log << "  axle displacement " << d1 * 1e6 << " um" << std::endl;
+        F1 = solve_at(d1, result, log);
+        ++result.load_iterations;
+        if (std::abs(F1 - target) <= parameters.statics.load_tolerance * target)
+          break;
+        // secant on F^(2/3), nearly linear in the approach for Hertz
+        const double g0 = std::cbrt(F0 * F0) - std::cbrt(target * target);
+        const double g1 = std::cbrt(F1 * F1) - std::cbrt(target * target);
+        const double d2 = (g1 != g0) ? d1 - g1 * (d1 - d0) / (g1 - g0) : d1 * 1.1;
+        d0 = d1;
+        F0 = F1;
+        d1 = d2 > 0 ? d2 : 0.5 * d1;
+        AssertThrow(k < 29,
+                    ExcMessage("The static contact solve did not reach Static solve/Axle load "
+                               "within Static solve/Load tolerance in 30 load iterations."));
+      }
+    result.axle_displacement = d1;
+    result.contact_force     = F1;
+    return result;
+  }
+} // namespace WheelRail
