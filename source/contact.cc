@@ -651,7 +651,9 @@ namespace WheelRail
         state.gap_previous = best_gap;
 
         const Tensor<1, dim> F = state.normal_force * best_n + state.tangential_force;
-        totals.force += F;
+        // the force on the first pass's slave body: in the second pass the
+        // slaves belong to the other body
+        totals.force += (&pass == &passes.front()) ? F : -F;
         ++totals.n_contact;
         {
           Point<dim> X_c, x_c;

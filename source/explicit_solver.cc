@@ -203,10 +203,14 @@ namespace WheelRail
     make_hanging_vertices_conforming();
 
     // ghost set: locally relevant DoFs and every master of a constraint
-    IndexSet ghosts = relevant;
+    IndexSet                             ghosts = relevant;
+    std::vector<types::global_dof_index> masters;
     for (const auto &line : hanging_constraints.get_lines())
       for (const auto &entry : line.entries)
-        ghosts.add_index(entry.first);
+        masters.push_back(entry.first);
+    std::sort(masters.begin(), masters.end());
+    masters.erase(std::unique(masters.begin(), masters.end()), masters.end());
+    ghosts.add_indices(masters.begin(), masters.end());
     ghosts.compress();
     vector_partitioner =
       std::make_shared<Utilities::MPI::Partitioner>(dof_handler.locally_owned_dofs(),

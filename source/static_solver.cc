@@ -15,6 +15,7 @@
 #include <wheelrail/geometry.h>
 #include <wheelrail/static_solver.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 
@@ -139,7 +140,10 @@ namespace WheelRail
             for (const auto &c : couplings)
               for (const auto node : c)
                 for (unsigned int d = 0; d < dim; ++d)
-                  writable.add_index(node + d);
+                  dofs.push_back(node + d);
+            std::sort(dofs.begin(), dofs.end());
+            dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+            writable.add_indices(dofs.begin(), dofs.end());
             writable.compress();
             sparsity.reinit(owned, owned, writable, mpi_communicator);
             DoFTools::make_sparsity_pattern(dof_handler, sparsity, constraints, false,

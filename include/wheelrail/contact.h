@@ -73,7 +73,7 @@ namespace WheelRail
   /** Totals over all slave nodes. */
   struct ContactSummary
   {
-    Tensor<1, dim> force;          ///< on the slave body [N]
+    Tensor<1, dim> force;          ///< on the (first pass's) slave body [N]
     unsigned int   n_contact   = 0; ///< nodes with F_n > 0
     unsigned int   n_slip      = 0; ///< nodes where the return map was active
     unsigned int   n_violation = 0; ///< |F_t| > f |F_n| (must stay 0)
