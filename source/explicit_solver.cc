@@ -556,6 +556,8 @@ namespace WheelRail
                             add(i, d, 0);
                           else if (bore == "spinning axle")
                             add(i, d, 2);
+                          else if (bore == "rigid axle")
+                            add(i, d, 3);
                           if (i + d < vector_partitioner->locally_owned_size())
                             bore_dofs.push_back(i + d);
                         }
@@ -580,6 +582,28 @@ namespace WheelRail
                                                    "x,y,z,t",
                                                    "Boundary conditions/Prescribed velocity");
       }
+  }
+
+
+
+  void
+  ExplicitSolver::attach_wheelset(Wheelset *ws)
+  {
+    wheelset = ws;
+    if (wheelset == nullptr)
+      return;
+    const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
+    double           local[2] = {0, 0};
+    for (const auto &p : prescribed)
+      if (p.kind == 3 && p.component == 0)
+        {
+          const Tensor<1, dim> r = node_points[p.index] - centre;
+          local[0] += mass.local_element(p.index);
+          local[1] += mass.local_element(p.index) * (r[0] * r[0] + r[2] * r[2]);
+        }
+    double global[2];
+    Utilities::MPI::sum(ArrayView<const double>(local, 2), mpi_communicator, ArrayView<double>(global, 2));
+    wheelset->set_bore_inertia(global[0], global[1], total_mass(Geometry::MaterialIds::wheel));
   }
 
 
@@ -1008,8 +1032,33 @@ namespace WheelRail
     for (const auto &[i, d, w] : applied)
       work_step += 0.5 * h * w * applied_total[d] * V[i];
 
+    // the rigid axle: the FE forces on the bore nodes and their moment
+    if (wheelset)
+      {
+        const Point<dim> axle = wheelset->axle_position();
+        double           local[4] = {0, 0, 0, 0};
+        // per bore vertex (its x-DoF; y and z follow contiguously)
+        for (const auto &p : prescribed)
+          if (p.kind == 3 && p.component == 0)
+            {
+              const unsigned int i = p.index;
+              const double       fx = G[i] - F[i], fy = G[i + 1] - F[i + 1], fz = G[i + 2] - F[i + 2];
+              const double       rx = node_points[i][0] + U[i] - axle[0];
+              const double       rz = node_points[i][2] + U[i + 2] - axle[2];
+              local[0] += fx;
+              local[1] += fy;
+              local[2] += fz;
+              local[3] += rz * fx - rx * fz;
+            }
+        double global[4];
+        Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                            mpi_communicator,
+                            ArrayView<double>(global, 4));
+        wheelset->advance(Tensor<1, dim>({global[0], global[1], global[2]}), global[3], h, dt, t);
+      }
+
     // prescribed DoFs: fixed, velocity function (at the middle of the
-    // step), spinning axle
+    // step), spinning axle, rigid axle
     if (prescribed_velocity)
       prescribed_velocity->set_time(t + 0.5 * dt);
     const double     t_new  = t + dt;
@@ -1026,11 +1075,17 @@ namespace WheelRail
             const Tensor<1, dim> r = node_points[p.index] - centre;
             u_new = (rotate_about_y(r, omega * t_new) - r)[p.component];
           }
+        else if (p.kind == 3)
+          u_new = wheelset->bore_displacement(node_points[p.index])[p.component];
         const double v_new = (u_new - p.u_prev) / dt;
         // reaction that enforces the motion, and its work over the step
         // over [t_{n-1/2}, t_{n+1/2}] (the first step: [0, dt/2])
-        const double r  = M[p.index] * (v_new - p.v_prev) / h - (G[p.index] - F[p.index]);
-        work_step += r * h * 0.5 * (p.v_prev + v_new);
+        // (the rigid axle's bore nodes are part of the wheelset's balance)
+        if (p.kind != 3)
+          {
+            const double r = M[p.index] * (v_new - p.v_prev) / h - (G[p.index] - F[p.index]);
+            work_step += r * h * 0.5 * (p.v_prev + v_new);
+          }
         const double va = first ? p.v_prev : 0.5 * (p.v_prev + v_new);
         if (energies)
           ke += 0.5 * M[p.index] * va * va;
@@ -1067,6 +1122,14 @@ namespace WheelRail
             energies->contact  = contact->summary().elastic_energy;
             energies->friction = contact->friction_dissipation();
             energies->damping += contact->damping_dissipation();
+          }
+        if (wheelset)
+          {
+            // replicated: axle, sprung mass, suspension, torque
+            energies->kinetic += wheelset->kinetic();
+            energies->internal += wheelset->spring_energy();
+            energies->damping += wheelset->damper_dissipation();
+            energies->external_work += wheelset->external_work();
           }
       }
     damping_dissipation += h * power;

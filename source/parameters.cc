@@ -523,10 +523,14 @@ namespace WheelRail
                       "Constants for the expression, 'name=value, ...'.");
     prm.declare_entry("Wheel bore",
                       "spinning axle",
-                      Patterns::Selection("free|fixed|spinning axle"),
+                      Patterns::Selection("free|fixed|spinning axle|rigid axle"),
                       "Motion of the bore nodes (boundary id 2): 'fixed'; "
                       "'spinning axle': rigid rotation about the fixed axle "
-                      "with Initial conditions/Wheel angular velocity; 'free'.");
+                      "with Initial conditions/Wheel angular velocity; 'rigid "
+                      "axle': the wheelset of subsection Wheelset (axle "
+                      "translating in x and z, turning about y, sprung mass on "
+                      "the suspension, driving torque), rolling at the Rolling "
+                      "speed; 'free'.");
     prm.leave_subsection();
   }
 
@@ -670,6 +674,77 @@ namespace WheelRail
 
 
   void
+  WheelsetParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Wheelset");
+    prm.declare_entry("Unsprung mass",
+                      "900",
+                      Patterns::Double(1, 1e6),
+                      "Mass of wheel and axle [kg], range [1, 1e6]; the rigid axle "
+                      "gets this minus the FE wheel's mass. The paper: 900 kg.");
+    prm.declare_entry("Sprung mass",
+                      "13400",
+                      Patterns::Double(0, 1e7),
+                      "M_c on the primary suspension [kg], range [0, 1e7]. The "
+                      "paper: 13.4 t.");
+    prm.declare_entry("Suspension stiffness",
+                      "1.15e6",
+                      Patterns::Double(0, 1e12),
+                      "K of the primary suspension [N/m], range [0, 1e12].");
+    prm.declare_entry("Suspension damping",
+                      "2500",
+                      Patterns::Double(0, 1e9),
+                      "C of the primary suspension [N s/m], range [0, 1e9].");
+    prm.declare_entry("Axle rotational inertia",
+                      "20",
+                      Patterns::Double(0, 1e6),
+                      "Polar moment of inertia of the axle about y, in addition to "
+                      "the FE wheel's [kg m^2], range [0, 1e6].");
+    prm.declare_entry("Rolling speed",
+                      "38.8889",
+                      Patterns::Double(0, 200),
+                      "V of the rolling run [m/s], range [0, 200]; 140 km/h = "
+                      "38.8889 m/s.");
+    prm.declare_entry("Nominal traction coefficient",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "mu_n = T / (R_w F_N,static): sets the driving torque T "
+                      "about the axle [-], range [0, 1].");
+    prm.declare_entry("Torque ramp time",
+                      "0",
+                      Patterns::Double(0, 10),
+                      "The torque rises linearly from 0 over this time [s], "
+                      "range [0, 10]; 0 = applied at once.");
+    prm.declare_entry("Static start",
+                      "true",
+                      Patterns::Bool(),
+                      "Before the explicit run, find the static equilibrium at A "
+                      "(wheel on the rail under gravity and the static load) with "
+                      "the implicit contact solve.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  WheelsetParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Wheelset");
+    unsprung_mass        = prm.get_double("Unsprung mass");
+    sprung_mass          = prm.get_double("Sprung mass");
+    suspension_stiffness = prm.get_double("Suspension stiffness");
+    suspension_damping   = prm.get_double("Suspension damping");
+    axle_inertia         = prm.get_double("Axle rotational inertia");
+    rolling_speed        = prm.get_double("Rolling speed");
+    traction_coefficient = prm.get_double("Nominal traction coefficient");
+    torque_ramp_time     = prm.get_double("Torque ramp time");
+    static_start         = prm.get_bool("Static start");
+    prm.leave_subsection();
+  }
+
+
+
+  void
   StaticParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Static solve");
@@ -730,7 +805,8 @@ namespace WheelRail
                       Patterns::Double(-1e4, 1e4),
                       "Initial angular velocity of the wheel about +y "
                       "through its centre [rad/s], range [-1e4, 1e4]; "
-                      "rolling towards +x is negative: -V/R_w.");
+                      "rolling towards +x is positive: +V/R_w (the contact "
+                      "point then has omega e_y x (-R e_z) = -V e_x).");
     prm.declare_entry("Velocity function",
                       "0; 0; 0",
                       Patterns::Anything(),
@@ -952,6 +1028,7 @@ namespace WheelRail
     InitialParameters::declare_parameters(prm);
     ContactParameters::declare_parameters(prm);
     StaticParameters::declare_parameters(prm);
+    WheelsetParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
   }
@@ -976,6 +1053,7 @@ namespace WheelRail
     initial.parse_parameters(prm);
     contact.parse_parameters(prm);
     statics.parse_parameters(prm);
+    wheelset.parse_parameters(prm);
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
     // validate the expressions now, so that a typo stops the run at once

@@ -146,6 +146,14 @@ namespace WheelRail
         contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->lumped_mass());
         solver->attach_contact(contact.get());
       }
+    if (parameters.problem.geometry == "wheel and rail" &&
+        parameters.boundary.wheel_bore == "rigid axle")
+      {
+        wheelset = std::make_unique<Wheelset>(parameters.wheelset,
+                                              parameters.solver,
+                                              Geometry::wheel_centre(parameters.geometry));
+        solver->attach_wheelset(wheelset.get());
+      }
 
     if (parameters.solver.time_step > 0)
       {
@@ -480,6 +488,53 @@ namespace WheelRail
 
 
   void
+  Simulator::start_wheelset()
+  {
+    const Point<dim> centre = Geometry::wheel_centre(parameters.geometry);
+    Point<dim>       axle   = centre;
+    double           radius = parameters.geometry.wheel_radius + parameters.geometry.initial_gap;
+    if (parameters.wheelset.static_start)
+      {
+        AssertThrow(contact,
+                    ExcMessage("Wheelset/Static start needs Contact/Enabled = true."));
+        Timer              timer;
+        std::ostringstream silent;
+        std::ostream &     log =
+          (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode) ?
+                 std::cout :
+                 silent;
+        StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
+        const StaticResult  r = statics.solve(wheelset->static_load(), log);
+        axle[2] -= r.axle_displacement;
+        // rolling radius: axle height above the contact points
+        double fz = 0, z = 0;
+        for (const auto &s : contact->slave_states())
+          if (s.in_contact)
+            {
+              fz += s.normal_force;
+              z += s.normal_force * s.x[2];
+            }
+        if (fz > 0)
+          radius = axle[2] - z / fz;
+        pcout << "Static start at A: wheel load " << fmt(r.contact_force * 1e-3) << " kN (target "
+              << fmt(wheelset->static_load() * 1e-3) << " kN), axle lowered by "
+              << fmt(r.axle_displacement * 1e6, 5) << " um, " << contact->summary().n_contact
+              << " contact nodes, penetration " << fmt(contact->summary().max_penetration * 1e6, 4)
+              << " um";
+        if (!parameters.problem.test_mode)
+          pcout << " (" << fmt(timer.wall_time(), 3) << " s)";
+        pcout << std::endl;
+      }
+    wheelset->start_rolling(axle, radius);
+    pcout << "Rolling: V = " << fmt(parameters.wheelset.rolling_speed) << " m/s, rolling radius "
+          << fmt(radius * 1e3, 7) << " mm, omega = " << fmt(wheelset->angular_velocity(), 6)
+          << " rad/s, driving torque " << fmt(wheelset->torque(1e30) * 1e-3, 5)
+          << " kN m (mu_n = " << fmt(parameters.wheelset.traction_coefficient) << ")" << std::endl;
+  }
+
+
+
+  void
   Simulator::apply_initial_conditions()
   {
     const InitialParameters &ip = parameters.initial;
@@ -492,7 +547,14 @@ namespace WheelRail
       Tensor<1, dim> v;
       for (unsigned int d = 0; d < dim; ++d)
         v[d] = extra->value(X, d);
-      if (material == Geometry::MaterialIds::wheel)
+      if (material == Geometry::MaterialIds::wheel && wheelset)
+        {
+          // the wheel rolls with its axle: V e_x + omega e_y x (x - x_axle)
+          const Tensor<1, dim> r = X - centre;
+          v += wheelset->axle_velocity() +
+               wheelset->angular_velocity() * Tensor<1, dim>({r[2], 0., -r[0]});
+        }
+      else if (material == Geometry::MaterialIds::wheel)
         {
           const Tensor<1, dim> r = X - centre;
           // omega e_y x r
@@ -564,7 +626,13 @@ namespace WheelRail
     };
     statistics.add_value("step", static_cast<unsigned int>(e.step));
     add("time [s]", e.time);
-    if (parameters.problem.geometry == "wheel and rail")
+    if (wheelset)
+      {
+        add("wheel x [m]", wheelset->axle_position()[0]);
+        add("axle z [m]", wheelset->axle_position()[2]);
+        add("omega [rad/s]", wheelset->angular_velocity());
+      }
+    else if (parameters.problem.geometry == "wheel and rail")
       {
         const Tensor<1, dim> ub = solver->bore_displacement();
         const Point<dim>     c  = Geometry::wheel_centre(parameters.geometry);
@@ -728,6 +796,8 @@ namespace WheelRail
   void
   Simulator::run_explicit()
   {
+    if (wheelset)
+      start_wheelset();
     apply_initial_conditions();
     setup_probe();
     const double        dt      = solver->time_step();

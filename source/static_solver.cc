@@ -97,16 +97,21 @@ namespace WheelRail
     IndexSet                          relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
 
+    // residual norm over the free DoFs at the displacement v
+    const auto evaluate = [&](const VectorType &v) {
+      solver.set_displacement(v);
+      solver.compute_residual(residual); // f_int - f_c - f_ext
+      double n = 0;
+      for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
+        if (!constraints.is_constrained(part.local_to_global(i)))
+          n += residual.local_element(i) * residual.local_element(i);
+      return std::sqrt(Utilities::MPI::sum(n, mpi_communicator));
+    };
+    double     norm = evaluate(u);
+    VectorType trial(u);
     for (unsigned int it = 0; it <= parameters.statics.max_newton_iterations; ++it)
       {
-        solver.set_displacement(u);
-        solver.compute_residual(residual); // f_int - f_c - f_ext
         force = contact.summary().force[2];
-        double norm = 0;
-        for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
-          if (!constraints.is_constrained(part.local_to_global(i)))
-            norm += residual.local_element(i) * residual.local_element(i);
-        norm = std::sqrt(Utilities::MPI::sum(norm, mpi_communicator));
         log << "    Newton " << std::setw(2) << it << ": residual " << std::setprecision(3)
             << std::scientific << norm / load_scale << std::defaultfloat << std::setprecision(6)
             << ", contact nodes " << contact.summary().n_contact << ", contact force "
@@ -218,10 +223,29 @@ namespace WheelRail
           }
         result.linear_iterations += control.last_step();
 
-        // hanging DoFs of the increment follow their masters in set_displacement
-        for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
-          if (!constraints.is_constrained(part.local_to_global(i)))
-            u.local_element(i) += du[part.local_to_global(i)];
+        // Backtracking on the residual norm: a full step can switch the
+        // contact set back and forth (the set then cycles); halve it until
+        // the residual decreases. Hanging DoFs of the increment follow their
+        // masters in set_displacement.
+        double alpha = 1;
+        for (unsigned int ls = 0;; ++ls)
+          {
+            for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+              trial.local_element(i) =
+                u.local_element(i) +
+                (constraints.is_constrained(part.local_to_global(i)) ? 0. :
+                                                                        alpha * du[part.local_to_global(i)]);
+            const double trial_norm = evaluate(trial);
+            if (trial_norm < norm || ls == 8)
+              {
+                u    = trial;
+                norm = trial_norm;
+                if (alpha < 1)
+                  log << "      (step length " << alpha << ")" << std::endl;
+                break;
+              }
+            alpha *= 0.5;
+          }
       }
     return force;
   }

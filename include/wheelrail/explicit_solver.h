@@ -25,6 +25,7 @@
 
 #include <wheelrail/contact.h>
 #include <wheelrail/parameters.h>
+#include <wheelrail/wheelset.h>
 
 #include <functional>
 #include <memory>
@@ -127,6 +128,10 @@ namespace WheelRail
     {
       this->contact = contact;
     }
+    /** Let the bore nodes move with @p wheelset (Wheel bore = rigid axle):
+     *  passes it the bore nodes' mass and inertia. */
+    void
+    attach_wheelset(Wheelset *wheelset);
     /** Set the displacement of the DoFs of material @p material from a
      *  vector with the same layout (e.g. a static solution). */
     void
@@ -298,7 +303,7 @@ namespace WheelRail
     {
       unsigned int index;
       unsigned int component;
-      unsigned int kind; ///< 0 fixed, 1 velocity function, 2 spinning axle
+      unsigned int kind; ///< 0 fixed, 1 velocity function, 2 spinning axle, 3 rigid axle
       double       u_prev = 0; ///< u at the start of the step
       double       v_prev = 0; ///< v at the previous half step
     };
@@ -308,6 +313,7 @@ namespace WheelRail
     std::vector<std::tuple<unsigned int, unsigned int, double>> applied;
     std::unique_ptr<Function<dim>>                              applied_force;
     PenaltyContact *                                            contact = nullptr;
+    Wheelset *                                                  wheelset = nullptr;
 
     VectorType u, v, f, v_old;
     double     t          = 0;

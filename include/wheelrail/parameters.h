@@ -185,6 +185,23 @@ namespace WheelRail
     void        parse_parameters(ParameterHandler &prm);
   };
 
+  /** Axle, primary suspension, sprung mass and driving torque (SPEC 3). */
+  struct WheelsetParameters
+  {
+    double unsprung_mass;
+    double sprung_mass;
+    double suspension_stiffness;
+    double suspension_damping;
+    double axle_inertia;
+    double rolling_speed;
+    double traction_coefficient;
+    double torque_ramp_time;
+    bool   static_start;
+
+    static void declare_parameters(ParameterHandler &prm);
+    void        parse_parameters(ParameterHandler &prm);
+  };
+
   /** The implicit static contact solve (SPEC 5.2). */
   struct StaticParameters
   {
@@ -263,6 +280,7 @@ namespace WheelRail
     InitialParameters      initial;
     ContactParameters      contact;
     StaticParameters       statics;
+    WheelsetParameters     wheelset;
     OutputParameters       output;
     VerificationParameters verification;
 

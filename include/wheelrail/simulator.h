@@ -53,6 +53,9 @@ namespace WheelRail
     run_explicit();
     void
     apply_initial_conditions();
+    /** Static equilibrium at A and the start of rolling (SPEC 5.2, 5.3). */
+    void
+    start_wheelset();
     void
     setup_probe();
     void
@@ -81,6 +84,7 @@ namespace WheelRail
     parallel::distributed::Triangulation<dim> triangulation;
     std::unique_ptr<ExplicitSolver>           solver;
     std::unique_ptr<PenaltyContact>           contact;
+    std::unique_ptr<Wheelset>                 wheelset;
     std::string                               output_directory;
 
     TableHandler statistics;

@@ -1,0 +1,152 @@
+#include <deal.II/base/exceptions.h>
+
+#include <wheelrail/wheelset.h>
+
+#include <cmath>
+#include <string>
+
+namespace WheelRail
+{
+  Wheelset::Wheelset(const WheelsetParameters &parameters,
+                     const SolverParameters &  solver,
+                     const Point<dim> &        axle_centre)
+    : prm(parameters)
+    , g(solver.gravity.norm())
+    , centre(axle_centre)
+  {}
+
+
+
+  void
+  Wheelset::set_bore_inertia(const double mass, const double polar_inertia, const double fe_wheel_mass)
+  {
+    m_bore = mass;
+    i_bore = polar_inertia;
+    m_axle = prm.unsprung_mass - fe_wheel_mass;
+    AssertThrow(m_axle > 0,
+                ExcMessage("Wheelset/Unsprung mass (" + std::to_string(prm.unsprung_mass) +
+                           " kg) must exceed the mass of the FE wheel (" +
+                           std::to_string(fe_wheel_mass) + " kg)."));
+  }
+
+
+
+  double
+  Wheelset::static_load() const
+  {
+    return (prm.sprung_mass + prm.unsprung_mass) * g;
+  }
+
+
+
+  double
+  Wheelset::nominal_torque() const
+  {
+    return prm.traction_coefficient * radius * static_load();
+  }
+
+
+
+  void
+  Wheelset::start_rolling(const Point<dim> &static_axle, const double rolling_radius)
+  {
+    displacement  = static_axle - centre;
+    d_axle_static = displacement[2];
+    radius        = rolling_radius;
+    velocity      = Tensor<1, dim>({prm.rolling_speed, 0., 0.});
+    // rolling towards +x turns the wheel about +y: the contact point
+    // (x - x_axle = -r e_z) then has omega e_y x (-r e_z) = -V e_x
+    omega         = prm.rolling_speed / rolling_radius;
+    theta         = 0;
+    d_c = v_c = 0;
+    work = damper_loss = 0;
+    active             = true;
+  }
+
+
+
+  double
+  Wheelset::torque(const double t) const
+  {
+    // a driving torque turns the wheel forward: about +y, like omega
+    const double ramp = prm.torque_ramp_time > 0 ? std::min(1., t / prm.torque_ramp_time) : 1.;
+    return ramp * nominal_torque();
+  }
+
+
+
+  void
+  Wheelset::advance(const Tensor<1, dim> &force,
+                    const double          moment,
+                    const double          h,
+                    const double          dt,
+                    const double          t)
+  {
+    if (!active)
+      return;
+    const double Mc  = prm.sprung_mass;
+    const double d_a = displacement[2] - d_axle_static;
+    const double Fs  = -Mc * g + prm.suspension_stiffness * (d_c - d_a) +
+                      prm.suspension_damping * (v_c - velocity[2]);
+    const double ax = force[0] / (m_axle + m_bore + Mc);
+    const double az = (force[2] - m_axle * g + Fs) / (m_axle + m_bore);
+    const double ac = (-Mc * g - Fs) / Mc;
+    const double T  = torque(t);
+    const double al = (moment + T) / (prm.axle_inertia + i_bore);
+
+    const double v_rel = v_c - velocity[2];
+    damper_loss += prm.suspension_damping * v_rel * v_rel * h;
+    const double omega_old = omega;
+    velocity[0] += h * ax;
+    velocity[2] += h * az;
+    v_c += h * ac;
+    omega += h * al;
+    work += T * h * 0.5 * (omega_old + omega);
+    displacement[0] += dt * velocity[0];
+    displacement[2] += dt * velocity[2];
+    d_c += dt * v_c;
+    theta += dt * omega;
+  }
+
+
+
+  Tensor<1, dim>
+  Wheelset::bore_displacement(const Point<dim> &X) const
+  {
+    const Tensor<1, dim> r = X - centre;
+    const double         c = std::cos(theta), s = std::sin(theta);
+    // rotation about +y
+    const Tensor<1, dim> Rr({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
+    return displacement + Rr - r;
+  }
+
+
+
+  double
+  Wheelset::kinetic() const
+  {
+    const double Mc = prm.sprung_mass;
+    return 0.5 * m_axle * (velocity[0] * velocity[0] + velocity[2] * velocity[2]) +
+           0.5 * Mc * (velocity[0] * velocity[0] + v_c * v_c) +
+           0.5 * prm.axle_inertia * omega * omega;
+  }
+
+
+
+  double
+  Wheelset::spring_energy() const
+  {
+    const double d_a = displacement[2] - d_axle_static;
+    const double e   = d_c - d_a;
+    return -prm.sprung_mass * g * e + 0.5 * prm.suspension_stiffness * e * e;
+  }
+
+
+
+  double
+  Wheelset::external_work() const
+  {
+    const double d_a = displacement[2] - d_axle_static;
+    return -m_axle * g * d_a - prm.sprung_mass * g * d_c + work;
+  }
+} // namespace WheelRail
