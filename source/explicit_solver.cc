@@ -11,6 +11,7 @@
 #include <wheelrail/geometry.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -724,6 +725,81 @@ namespace WheelRail
     for (unsigned int i = 0; i < node_points.size(); ++i)
       if (node_material[i] != numbers::invalid_material_id)
         v.local_element(i) = v_of_X(node_points[i], node_material[i])[node_component[i]];
+    v.update_ghost_values();
+    distribute(v);
+    for (auto &p : prescribed)
+      p.v_prev = v.local_element(p.index);
+  }
+
+
+
+  void
+  ExplicitSolver::add_centrifugal_load(const Point<dim> &centre,
+                                       const double      omega,
+                                       const double      factor)
+  {
+    for (unsigned int k = 0; k < f_ext.locally_owned_size(); ++k)
+      if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] != 1)
+        f_ext.local_element(k) +=
+          factor * mass.local_element(k) * omega * omega * (node_points[k] - centre)[node_component[k]];
+  }
+
+
+
+  void
+  ExplicitSolver::set_rolling_velocity(const Tensor<1, dim> &V,
+                                       const Point<dim> &    centre,
+                                       const double          omega)
+  {
+    // volume-weighted nodal average of H = grad u: gradient[j] holds H_ij at
+    // DoF (node, i)
+    std::array<VectorType, dim> gradient;
+    VectorType                  weight(vector_partitioner);
+    for (auto &g : gradient)
+      g.reinit(vector_partitioner);
+    const double *U = u.begin();
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double *      data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int l = 0; l < n_valid; ++l)
+          {
+            double H[3][3] = {};
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+            const double V0 = data[Field::volume * W + l];
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  const unsigned int k = nodes[a * W + l] + i;
+                  weight.local_element(k) += V0;
+                  for (unsigned int j = 0; j < 3; ++j)
+                    gradient[j].local_element(k) += V0 * H[i][j];
+                }
+          }
+      }
+    weight.compress(VectorOperation::add);
+    for (auto &g : gradient)
+      g.compress(VectorOperation::add);
+
+    for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
+      {
+        const unsigned int i = node_component[k];
+        double             H[3];
+        for (unsigned int j = 0; j < 3; ++j)
+          H[j] = weight.local_element(k) > 0 ? gradient[j].local_element(k) / weight.local_element(k) : 0.;
+        if (node_material[k] == Geometry::MaterialIds::wheel)
+          {
+            const Tensor<1, dim> r = node_points[k] - centre;
+            const double         w[3] = {omega * r[2], 0., -omega * r[0]};
+            v.local_element(k)        = V[i] + w[i] + H[0] * w[0] + H[1] * w[1] + H[2] * w[2];
+          }
+        else
+          v.local_element(k) = -V[0] * H[0];
+      }
     v.update_ghost_values();
     distribute(v);
     for (auto &p : prescribed)

@@ -503,8 +503,12 @@ namespace WheelRail
           (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode) ?
                  std::cout :
                  silent;
+        // the wheel of the rolling run spins: include its centrifugal load
+        const double omega = parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
+        solver->add_centrifugal_load(centre, omega, 1.);
         StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
         const StaticResult  r = statics.solve(wheelset->static_load(), log);
+        solver->add_centrifugal_load(centre, omega, -1.);
         axle[2] -= r.axle_displacement;
         // rolling radius: axle height above the contact points
         double fz = 0, z = 0;
@@ -669,13 +673,17 @@ namespace WheelRail
   void
   Simulator::record_sample(const Energies &e)
   {
-    if (parameters.problem.geometry != "block on plate")
+    if (!contact)
       return;
-    Sample s;
+    const bool block = parameters.problem.geometry == "block on plate";
+    Sample     s;
     s.t                  = e.time;
-    s.block_momentum     = solver->momentum(Geometry::MaterialIds::block);
-    s.plate_momentum     = solver->momentum(Geometry::MaterialIds::plate);
-    s.block_displacement = solver->mean_displacement(Geometry::MaterialIds::block);
+    if (block)
+      {
+        s.block_momentum     = solver->momentum(Geometry::MaterialIds::block);
+        s.plate_momentum     = solver->momentum(Geometry::MaterialIds::plate);
+        s.block_displacement = solver->mean_displacement(Geometry::MaterialIds::block);
+      }
     s.contact_force      = contact ? contact->summary().force : Tensor<1, dim>();
     s.relative_displacement =
       contact ? contact->summary().relative_displacement : Tensor<1, dim>();
@@ -797,8 +805,14 @@ namespace WheelRail
   Simulator::run_explicit()
   {
     if (wheelset)
-      start_wheelset();
-    apply_initial_conditions();
+      {
+        start_wheelset();
+        solver->set_rolling_velocity(wheelset->axle_velocity(),
+                                     Geometry::wheel_centre(parameters.geometry),
+                                     wheelset->angular_velocity());
+      }
+    else
+      apply_initial_conditions();
     setup_probe();
     const double        dt      = solver->time_step();
     const unsigned long n_steps =
@@ -1090,6 +1104,54 @@ namespace WheelRail
                         "yes" :
                         "no")
                   << std::endl;
+          }
+      }
+    else if (vp.check == "static start" || vp.check == "traction")
+      {
+        AssertThrow(wheelset && samples.size() > 4,
+                    ExcMessage("Verification/Check = " + vp.check +
+                               " needs Boundary conditions/Wheel bore = rigid axle and at least "
+                               "five statistics rows."));
+        const double F0 = samples.front().contact_force[2];
+        if (vp.check == "static start")
+          {
+            // the largest change of F_N in the first 100 steps of the run
+            const double t100 = 100 * solver->time_step() * (1 + 1e-9);
+            double       jump = 0;
+            for (const auto &s : samples)
+              if (s.t <= t100)
+                jump = std::max(jump, std::abs(s.contact_force[2] - F0) / F0);
+            result("F_N after the static solve against the static load",
+                   F0,
+                   wheelset->static_load(),
+                   "kN",
+                   1e-3);
+            pcout << "  largest |F_N - F_N(0)| / F_N(0) in the first 100 steps: " << fmt(jump, 2)
+                  << " (limit 0.02), within: " << (jump <= 0.02 ? "yes" : "no") << std::endl;
+          }
+        else
+          {
+            // mean achieved traction coefficient over the second half
+            const unsigned int first = samples.size() / 2;
+            double             fl = 0, fn = 0;
+            for (unsigned int i = first; i < samples.size(); ++i)
+              {
+                fl += samples[i].contact_force[0];
+                fn += samples[i].contact_force[2];
+              }
+            const auto   law      = contact->friction_law();
+            const double mu_n     = parameters.wheelset.traction_coefficient;
+            const double f_limit  = parameters.contact.friction_law == "exponential" ?
+                                      parameters.contact.dynamic_coefficient :
+                                      law->coefficient(0.);
+            const double expected = std::min(mu_n, f_limit);
+            pcout << "  mu_n " << fmt(mu_n) << ", saturation level " << fmt(f_limit)
+                  << (mu_n > f_limit ? " (saturated)" : " (below saturation)") << std::endl;
+            result("achieved traction coefficient mu_a = F_L / F_N, mean over the second half",
+                   fl / fn,
+                   expected,
+                   "",
+                   1.);
           }
       }
     else if (vp.check == "energy balance")

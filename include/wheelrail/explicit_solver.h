@@ -167,6 +167,28 @@ namespace WheelRail
     assemble_stiffness(TrilinosWrappers::SparseMatrix &  matrix,
                        const AffineConstraints<double> &constraints) const;
 
+    /**
+     * Add (factor 1) or remove (factor -1) the centrifugal load
+     * m omega^2 (x - c) of a wheel spinning at @p omega about the axle
+     * through @p centre to the external force, for a static solve of the
+     * steadily rolling wheel (it expands by about 30 um at the tread at
+     * 140 km/h; without the load the rolling run starts with that
+     * expansion as a radial vibration that presses the wheel into the rail).
+     */
+    void
+    add_centrifugal_load(const Point<dim> &centre, const double omega, const double factor);
+
+    /**
+     * Initial velocity of steady rolling superposed on the current (static)
+     * displacement u: the deformation pattern stays with the axle while the
+     * material moves through it. Wheel: v = V + w + H w, w = omega e_y x
+     * (X - c); rail: v = -V H e_x (H = grad u, averaged at the nodes).
+     * Without the convective terms H w and -V H e_x the start from the static
+     * state is a jolt (the rail's deflection does not travel with the load).
+     */
+    void
+    set_rolling_velocity(const Tensor<1, dim> &V, const Point<dim> &centre, const double omega);
+
     /** One central-difference step; energies at t_n if @p energies. */
     void
     step(Energies *energies = nullptr);
