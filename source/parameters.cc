@@ -3,8 +3,11 @@
 
 #include <wheelrail/parameters.h>
 
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
 
 namespace WheelRail
 {
@@ -1042,13 +1045,30 @@ namespace WheelRail
   void
   Parameters::parse(ParameterHandler &prm, const std::string &filename)
   {
-    {
-      std::ifstream in(filename);
-      AssertThrow(in.good(),
-                  ExcMessage("Cannot open the parameter file '" + filename +
-                             "'."));
-    }
-    prm.parse_input(filename);
+    std::ifstream in(filename);
+    AssertThrow(in.good(),
+                ExcMessage("Cannot open the parameter file '" + filename + "'."));
+    // 'include FILE' is read relative to the working directory by deal.II;
+    // a relative FILE that exists next to the including file is taken from
+    // there, so that cases in prm/ can include each other from anywhere.
+    // Lines stay one to one: error messages keep their line numbers.
+    std::stringstream text;
+    const auto        directory = std::filesystem::path(filename).parent_path();
+    for (std::string line; std::getline(in, line);)
+      {
+        std::istringstream words(line);
+        std::string        keyword, target;
+        words >> keyword;
+        std::getline(words >> std::ws, target);
+        while (!target.empty() && std::isspace(static_cast<unsigned char>(target.back())))
+          target.pop_back();
+        if ((keyword == "include" || keyword == "INCLUDE") && !target.empty() &&
+            std::filesystem::path(target).is_relative() && !std::filesystem::exists(target) &&
+            std::filesystem::exists(directory / target))
+          line = "include " + (directory / target).string();
+        text << line << '\n';
+      }
+    prm.parse_input(text, filename);
     problem.parse_parameters(prm);
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
