@@ -602,9 +602,20 @@ namespace WheelRail
           local[0] += mass.local_element(p.index);
           local[1] += mass.local_element(p.index) * (r[0] * r[0] + r[2] * r[2]);
         }
+    // polar inertia of the whole FE wheel about the axle
+    double wheel_inertia = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      if (node_material[i] == Geometry::MaterialIds::wheel && node_component[i] == 0)
+        {
+          const Tensor<1, dim> r = node_points[i] - centre;
+          wheel_inertia += mass.local_element(i) * (r[0] * r[0] + r[2] * r[2]);
+        }
     double global[2];
     Utilities::MPI::sum(ArrayView<const double>(local, 2), mpi_communicator, ArrayView<double>(global, 2));
-    wheelset->set_bore_inertia(global[0], global[1], total_mass(Geometry::MaterialIds::wheel));
+    wheelset->set_bore_inertia(global[0],
+                               global[1],
+                               total_mass(Geometry::MaterialIds::wheel),
+                               Utilities::MPI::sum(wheel_inertia, mpi_communicator));
   }
 
 

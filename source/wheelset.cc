@@ -18,10 +18,15 @@ namespace WheelRail
 
 
   void
-  Wheelset::set_bore_inertia(const double mass, const double polar_inertia, const double fe_wheel_mass)
+  Wheelset::set_bore_inertia(const double mass,
+                             const double polar_inertia,
+                             const double fe_wheel_mass,
+                             const double fe_wheel_inertia)
   {
-    m_bore = mass;
-    i_bore = polar_inertia;
+    m_bore  = mass;
+    i_bore  = polar_inertia;
+    m_wheel = fe_wheel_mass;
+    i_wheel = fe_wheel_inertia;
     m_axle = prm.unsprung_mass - fe_wheel_mass;
     AssertThrow(m_axle > 0,
                 ExcMessage("Wheelset/Unsprung mass (" + std::to_string(prm.unsprung_mass) +
@@ -43,6 +48,16 @@ namespace WheelRail
   Wheelset::nominal_torque() const
   {
     return prm.traction_coefficient * radius * static_load();
+  }
+
+
+
+  double
+  Wheelset::steady_traction_coefficient() const
+  {
+    const double M = prm.unsprung_mass + prm.sprung_mass; // axle + FE wheel + M_c
+    const double I = prm.axle_inertia + i_wheel;
+    return nominal_torque() / (radius * static_load()) / (1. + I / (M * radius * radius));
   }
 
 

@@ -60,6 +60,17 @@ namespace WheelRail
     }
   };
 
+  /** Contact results carried over to a master (rail-top) node. */
+  struct MasterNodeState
+  {
+    Point<dim>     X;                ///< reference position [m]
+    double         area         = 0; ///< tributary area on the master surface [m^2]
+    double         normal_force = 0; ///< sum of N_j |F_n| of the slaves on its faces [N]
+    Tensor<1, dim> tangential_force; ///< the same for F_t (on the slave side) [N]
+    double         slip_velocity = 0; ///< N_j-weighted mean of the slaves' s_n [m/s]
+    double         cof           = 0; ///< N_j-weighted mean local COF
+  };
+
   /** An active slave/master pair for the implicit tangent. */
   struct ContactPair
   {
@@ -134,6 +145,14 @@ namespace WheelRail
     {
       return passes.front().slaves;
     }
+    /**
+     * The contact state carried over to the master nodes of the first pass
+     * (the rail top): forces distributed with the shape functions as the
+     * penalty forces are, slip velocity and COF averaged with them.
+     */
+    std::vector<MasterNodeState>
+    master_states() const;
+
     /** Totals of the last add_forces(). */
     const ContactSummary &
     summary() const
@@ -215,6 +234,7 @@ namespace WheelRail
     std::vector<Point<dim>>              node_x;       ///< current positions
     std::vector<Point<dim>>              node_x_search; ///< at the last search
     std::vector<Tensor<1, dim>>          node_normal; ///< averaged master normals
+    std::vector<double>                  node_area;   ///< master tributary area (first pass)
     std::vector<unsigned int>            active_nodes;  ///< gathered every step
     std::vector<int>                     recv_counts, recv_displs;
     std::vector<unsigned int>            recv_order; ///< node of each received item

@@ -244,6 +244,18 @@ namespace WheelRail
     {
       return node_points;
     }
+    /** Component (0, 1, 2) of the DoF with local index i. */
+    unsigned int
+    dof_component(const unsigned int i) const
+    {
+      return node_component[i];
+    }
+    /** Material id of the cells around the DoF with local index i. */
+    types::material_id
+    dof_material(const unsigned int i) const
+    {
+      return node_material[i];
+    }
     /** DoFs on the boundary (local indices of locally relevant DoFs). */
     const std::vector<bool> &
     boundary_dof_mask() const

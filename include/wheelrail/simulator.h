@@ -91,11 +91,30 @@ namespace WheelRail
     std::vector<std::pair<double, std::string>> vtu_records;
     unsigned int                                vtu_counter = 0;
 
-    // probe: owner rank and local DoF index of the x-component
-    unsigned int        probe_owner = 0;
-    unsigned int        probe_dof   = 0;
-    Point<dim>          probe_location;
-    std::vector<double> probe_history; ///< t, u_x,u_y,u_z, v_x,v_y,v_z per step
+    /** A node whose displacement and velocity are recorded every step. */
+    struct Probe
+    {
+      std::string         file;      ///< output file name
+      Point<dim>          target;    ///< the node nearest to it is recorded
+      types::material_id  material = numbers::invalid_material_id; ///< search only this body
+      unsigned int        owner = 0; ///< rank owning the node
+      unsigned int        dof   = 0; ///< local index of its x-DoF on the owner
+      Point<dim>          location;  ///< reference position of the node
+      std::vector<double> history;   ///< t, u_x,u_y,u_z, v_x,v_y,v_z per step
+    };
+    /** probes[0]: Output/Probe point; with a wheelset also the wheel-tread
+     *  node that passes O. */
+    std::vector<Probe> probes;
+
+    /** Contact-patch snapshots at the instants of SPEC 5.5: when the patch
+     *  centre passes x = -V dt_s, 0, +V dt_s (dt_s = 5.7 us). */
+    void
+    write_patch_snapshots();
+    double       previous_patch_centre = -std::numeric_limits<double>::max();
+    unsigned int next_snapshot         = 0;
+    /** Mean micro-slip of the contact nodes behind the patch centre. */
+    double
+    trailing_micro_slip() const;
 
     Energies     initial_energies;
     bool         have_initial_energies = false;
@@ -114,6 +133,7 @@ namespace WheelRail
       unsigned int   n_contact;
       double         kinetic, external_work, friction, total;
       double         tangential_stiffness; ///< sum of k_t over the contact pairs
+      double         mean_cof;             ///< sum f |F_n| / sum |F_n| over the contact nodes
     };
     std::vector<Sample> samples;
     unsigned long       friction_violations = 0;

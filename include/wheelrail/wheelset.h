@@ -31,9 +31,21 @@ namespace WheelRail
     Wheelset(const WheelsetParameters &parameters, const SolverParameters &solver,
              const Point<dim> &axle_centre);
 
-    /** Lumped mass and polar inertia of the bore nodes (all ranks). */
+    /** Lumped mass and polar inertia of the bore nodes and of the whole FE
+     *  wheel (all ranks). */
     void
-    set_bore_inertia(const double mass, const double polar_inertia, const double fe_wheel_mass);
+    set_bore_inertia(const double mass,
+                     const double polar_inertia,
+                     const double fe_wheel_mass,
+                     const double fe_wheel_inertia);
+
+    /**
+     * Traction coefficient of steady rolling under the torque: the traction
+     * force accelerates the vehicle (horizontal mass M) and, with it, the
+     * wheel's rotation (polar inertia I), so F_L = T / (r (1 + I / (M r^2))).
+     */
+    double
+    steady_traction_coefficient() const;
 
     /** Start the rolling run: axle at @p static_axle (after the static
      *  solve), velocity V along x, angular velocity +V / r_eff about y
@@ -99,7 +111,7 @@ namespace WheelRail
     const WheelsetParameters &prm;
     const double              g;       ///< |gravity|
     const Point<dim>          centre;  ///< reference axle centre
-    double m_axle = 0, m_bore = 0, i_bore = 0;
+    double m_axle = 0, m_bore = 0, i_bore = 0, m_wheel = 0, i_wheel = 0;
     bool   active = false;
     Tensor<1, dim> displacement, velocity; ///< axle, x and z used
     double         theta = 0, omega = 0;
