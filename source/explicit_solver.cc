@@ -168,6 +168,25 @@ namespace WheelRail
 
 
 
+    /** Displacement gradient H = sum_a u_a (x) b_a of lane l of a batch. */
+    inline void
+    displacement_gradient(const double *      U,
+                          const unsigned int *nodes,
+                          const double *      data,
+                          const unsigned int  l,
+                          double (&H)[3][3])
+    {
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          H[i][j] = 0;
+      for (unsigned int a = 0; a < 8; ++a)
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+    }
+
+
+
     /** Rotation about +y by angle @p theta applied to @p r. */
     Tensor<1, dim>
     rotate_about_y(const Tensor<1, dim> &r, const double theta)
@@ -776,11 +795,8 @@ namespace WheelRail
         const unsigned int  n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int l = 0; l < n_valid; ++l)
           {
-            double H[3][3] = {};
-            for (unsigned int a = 0; a < 8; ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+            double H[3][3];
+            displacement_gradient(U, nodes, data, l, H);
             const double V0 = data[Field::volume * W + l];
             for (unsigned int a = 0; a < 8; ++a)
               for (unsigned int i = 0; i < 3; ++i)
@@ -1010,11 +1026,8 @@ namespace WheelRail
         const unsigned int  n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int l = 0; l < n_valid; ++l)
           {
-            double H[3][3] = {};
-            for (unsigned int a = 0; a < 8; ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+            double H[3][3];
+            displacement_gradient(U, nodes, data, l, H);
             double E[3][3], EE = 0;
             for (unsigned int i = 0; i < 3; ++i)
               for (unsigned int j = 0; j < 3; ++j)
@@ -1244,11 +1257,12 @@ namespace WheelRail
         const unsigned int  n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int l = 0; l < n_valid; ++l)
           {
+            double h[3][3];
+            displacement_gradient(U, nodes, data, l, h);
             Tensor<2, dim> H;
-            for (unsigned int a = 0; a < 8; ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                H[i][j] = h[i][j];
             const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
             const Tensor<2, dim> E = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
             const Tensor<2, dim> S = data[Field::lambda * W + l] * trace(E) *

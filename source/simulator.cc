@@ -81,6 +81,17 @@ namespace WheelRail
 
 
 
+  std::ostream &
+  Simulator::solver_log()
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode)
+      return std::cout;
+    silent_log.str("");
+    return silent_log;
+  }
+
+
+
   void
   Simulator::write_file(const std::string &name, const std::string &content) const
   {
@@ -386,13 +397,8 @@ namespace WheelRail
                 ExcMessage("Problem/Mode = static contact needs Problem/Geometry = wheel and "
                            "rail and Contact/Enabled = true."));
     Timer               timer;
-    std::ostringstream  silent;
-    std::ostream &      log =
-      (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode) ?
-             std::cout :
-             silent;
     StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
-    const StaticResult  r = statics.solve(parameters.statics.axle_load, log);
+    const StaticResult  r = statics.solve(parameters.statics.axle_load, solver_log());
     pcout << "Static solution: axle displacement " << fmt(r.axle_displacement * 1e6) << " um, "
           << "contact force " << fmt(r.contact_force * 1e-3) << " kN after " << r.load_iterations
           << " load iterations, " << r.newton_iterations << " Newton iterations";
@@ -497,17 +503,12 @@ namespace WheelRail
       {
         AssertThrow(contact,
                     ExcMessage("Wheelset/Static start needs Contact/Enabled = true."));
-        Timer              timer;
-        std::ostringstream silent;
-        std::ostream &     log =
-          (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode) ?
-                 std::cout :
-                 silent;
+        Timer timer;
         // the wheel of the rolling run spins: include its centrifugal load
         const double omega = parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
         solver->add_centrifugal_load(centre, omega, 1.);
         StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
-        const StaticResult  r = statics.solve(wheelset->static_load(), log);
+        const StaticResult  r = statics.solve(wheelset->static_load(), solver_log());
         solver->add_centrifugal_load(centre, omega, -1.);
         axle[2] -= r.axle_displacement;
         // rolling radius: axle height above the contact points

@@ -16,6 +16,7 @@
 #include <wheelrail/parameters.h>
 
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,12 @@ namespace WheelRail
     write_vtu();
     void
     final_checks();
+
+    /** Where the implicit solver's iterations go: the screen of rank 0,
+     *  or nowhere in test mode and on the other ranks. */
+    std::ostream &
+    solver_log();
+    std::ostringstream silent_log;
 
     /** Write @p content to @p name in the output directory atomically
      *  (temporary file, then rename), from rank 0. */
