@@ -894,7 +894,7 @@ namespace WheelRail
       "none",
       Patterns::Selection(
         "none|wave arrival|longitudinal frequency|bending frequency|energy balance|"
-        "inclined plane|tangential sliding|impact|static start|traction"),
+        "inclined plane|tangential sliding|impact|static start|traction|free rolling"),
       "Analytic comparison made at the end of an explicit run on the bar: "
       "'wave arrival': first time the probe velocity exceeds Wave threshold "
       "times the far-end steady value, against L/sqrt(E/rho); "
@@ -914,7 +914,9 @@ namespace WheelRail
       "the static load, and its largest change in the first 100 explicit "
       "steps; 'traction' (rigid axle): the mean achieved traction coefficient "
       "F_L / F_N over the second half of the run against min(mu_n, f), f the "
-      "Coulomb coefficient or f_D of the exponential law.");
+      "Coulomb coefficient or f_D of the exponential law; 'free rolling' (rigid "
+      "axle, no torque): the mean F_N over the second half against the static "
+      "load, and the mean F_L / F_N and trailing micro-slip near zero.");
     prm.declare_entry("Displacement gradient",
                       "1e-3, 2e-4, -3e-4, 5e-4, -1e-3, 2e-4, 1e-4, 3e-4, 2e-3",
                       Patterns::List(Patterns::Double(-1, 1), 9, 9, ","),

@@ -141,6 +141,7 @@ namespace WheelRail
       double         kinetic, external_work, friction, total;
       double         tangential_stiffness; ///< sum of k_t over the contact pairs
       double         mean_cof;             ///< sum f |F_n| / sum |F_n| over the contact nodes
+      double         trailing_slip;        ///< mean micro-slip behind the patch centre
     };
     std::vector<Sample> samples;
     unsigned long       friction_violations = 0;
