@@ -954,17 +954,6 @@ namespace WheelRail
 
 
 
-  std::vector<std::pair<unsigned int, unsigned int>>
-  ExplicitSolver::prescribed_dofs() const
-  {
-    std::vector<std::pair<unsigned int, unsigned int>> result;
-    for (const auto &p : prescribed)
-      result.emplace_back(p.index, p.kind);
-    return result;
-  }
-
-
-
   void
   ExplicitSolver::assemble_stiffness(TrilinosWrappers::SparseMatrix &  matrix,
                                      const AffineConstraints<double> &constraints) const

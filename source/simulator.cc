@@ -540,7 +540,7 @@ namespace WheelRail
 
 
   double
-  Simulator::trailing_micro_slip() const
+  Simulator::patch_centre() const
   {
     double fn = 0, fx = 0;
     for (const auto &s : contact->slave_states())
@@ -549,9 +549,17 @@ namespace WheelRail
           fn += s.normal_force;
           fx += s.normal_force * s.x[0];
         }
-    if (fn == 0)
+    return fn > 0 ? fx / fn : std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  double
+  Simulator::trailing_micro_slip() const
+  {
+    const double centre = patch_centre();
+    if (std::isnan(centre))
       return 0;
-    const double centre = fx / fn;
     double       sum = 0;
     unsigned int n   = 0;
     for (const auto &s : contact->slave_states())
@@ -568,17 +576,9 @@ namespace WheelRail
   void
   Simulator::write_patch_snapshots()
   {
-    // patch centre: force-weighted mean x of the contact nodes
-    double fn = 0, fx = 0;
-    for (const auto &s : contact->slave_states())
-      if (s.in_contact)
-        {
-          fn += s.normal_force;
-          fx += s.normal_force * s.x[0];
-        }
-    if (fn == 0 || next_snapshot >= 3)
+    const double centre = patch_centre();
+    if (std::isnan(centre) || next_snapshot >= 3)
       return;
-    const double centre = fx / fn;
     const double dts    = 5.7e-6; // s, the paper's 175 kHz sampling
     const double target = (static_cast<double>(next_snapshot) - 1.) * parameters.wheelset.rolling_speed * dts;
     if (!(previous_patch_centre < target && centre >= target))
@@ -713,7 +713,9 @@ namespace WheelRail
   Simulator::setup_probe()
   {
     probes.clear();
-    probes.push_back(Probe{"probe.csv", parameters.output.probe_point});
+    probes.emplace_back();
+    probes.back().file   = "probe.csv";
+    probes.back().target = parameters.output.probe_point;
     if (wheelset)
       {
         // the wheel-tread node that reaches O: the arc from the lowest point
@@ -721,11 +723,12 @@ namespace WheelRail
         const GeometryParameters &g   = parameters.geometry;
         const double              phi = -g.wheel_centre_x / g.wheel_radius;
         const Point<dim>          c   = Geometry::wheel_centre(g);
-        probes.push_back(Probe{"wheel_probe.csv",
-                               Point<dim>(c[0] + g.wheel_radius * std::sin(phi),
+        probes.emplace_back();
+        probes.back().file     = "wheel_probe.csv";
+        probes.back().target   = Point<dim>(c[0] + g.wheel_radius * std::sin(phi),
                                           0.,
-                                          c[2] - g.wheel_radius * std::cos(phi)),
-                               Geometry::MaterialIds::wheel});
+                                          c[2] - g.wheel_radius * std::cos(phi));
+        probes.back().material = Geometry::MaterialIds::wheel;
       }
     const auto &points = solver->support_points();
     const auto &part   = *solver->partitioner();

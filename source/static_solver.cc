@@ -67,24 +67,10 @@ namespace WheelRail
     const IndexSet &       owned       = dof_handler.locally_owned_dofs();
 
     // the bore moves down rigidly by delta
-    const std::vector<unsigned char> component = [&]() {
-      std::vector<unsigned char> c(part.locally_owned_size());
-      const FiniteElement<dim> &fe = dof_handler.get_fe();
-      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (part.in_local_range(dofs[i]))
-                c[part.global_to_local(dofs[i])] = fe.system_to_component_index(i).first;
-          }
-      return c;
-    }();
     for (const auto dof : bore_dofs)
       {
         const unsigned int i = part.global_to_local(dof);
-        u.local_element(i)   = (component[i] == 2) ? -delta : 0.;
+        u.local_element(i)   = (solver.dof_component(i) == 2) ? -delta : 0.;
       }
 
     VectorType     residual;

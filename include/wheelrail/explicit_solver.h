@@ -150,9 +150,6 @@ namespace WheelRail
     {
       return mass;
     }
-    /** The prescribed DoFs (owned, local indices); kind 0 fixed, 1 velocity, 2 axle. */
-    std::vector<std::pair<unsigned int, unsigned int>>
-    prescribed_dofs() const;
     const AffineConstraints<double> &
     get_hanging_constraints() const
     {

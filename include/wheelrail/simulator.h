@@ -119,6 +119,9 @@ namespace WheelRail
     write_patch_snapshots();
     double       previous_patch_centre = -std::numeric_limits<double>::max();
     unsigned int next_snapshot         = 0;
+    /** Force-weighted mean x of the contact nodes (NaN without contact). */
+    double
+    patch_centre() const;
     /** Mean micro-slip of the contact nodes behind the patch centre. */
     double
     trailing_micro_slip() const;
