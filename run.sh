@@ -4,6 +4,9 @@
 #                               run prm/default.prm on 2 MPI ranks
 #   ./run.sh test               same set-up, then the whole test suite (ctest)
 #   ./run.sh CASE.prm [-np N]   same set-up, then run CASE.prm on N ranks (default 2)
+#   ./run.sh bench [N ...]      same set-up, then the speed benchmark prm/bench_paper.prm
+#                               on 1 and 2 ranks (or the rank counts N given); figures
+#                               appended to bench/results.csv
 #   ./run.sh build              set-up and build only
 #   ./run.sh help               this text
 set -euo pipefail
@@ -53,6 +56,35 @@ run_case() {
   echo "run.sh: results are in $(cd "${dir:-results}" && pwd)/ (open solution.pvd in ParaView; statistics; probe.csv; parameters.prm)"
 }
 
+# The speed benchmark: prm/bench_paper.prm on each rank count, its
+# timing.csv row appended to bench/results.csv with the date, commit and CPU.
+run_bench() {
+  local counts=("$@")
+  [ ${#counts[@]} -eq 0 ] && counts=(1 2)
+  mkdir -p bench
+  local csv=bench/results.csv
+  if [ ! -f "$csv" ]; then
+    echo "date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h" > "$csv"
+  fi
+  local commit cpu
+  commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
+  git diff --quiet 2>/dev/null || commit="$commit+changes"
+  cpu=$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -1 | tr -d ',')
+  for np in "${counts[@]}"; do
+    echo "run.sh: benchmark on $np rank(s)"
+    if [ "$np" -gt 1 ]; then
+      mpirun -np "$np" "$top/build/wheelrail" prm/bench_paper.prm | grep -v '^step'
+    else
+      "$top/build/wheelrail" prm/bench_paper.prm | grep -v '^step'
+    fi
+    local row
+    row=$(grep -v '^#' results/bench/timing.csv | tail -1)
+    echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row" >> "$csv"
+  done
+  echo "run.sh: benchmark figures appended to $top/$csv"
+  { head -1 "$csv"; tail -n ${#counts[@]} "$csv"; } | cut -d, -f4- | column -s, -t || true
+}
+
 verb=${1:-default}
 case "$verb" in
   default)
@@ -66,8 +98,13 @@ case "$verb" in
   build)
     build
     ;;
+  bench)
+    shift
+    build
+    run_bench "$@"
+    ;;
   help|-h|--help)
-    sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -77,7 +114,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,8p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac

@@ -8,6 +8,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <wheelrail/explicit_solver.h>
+
+#include <chrono>
 #include <wheelrail/geometry.h>
 
 #include <algorithm>
@@ -48,122 +50,202 @@ namespace WheelRail
                                  {-1, 1, 1, -1, 1, -1, -1, 1}};
 
     /**
+     * W lanes of doubles as one value: GCC/Clang vector extension. With
+     * -march=native on an AVX-512 machine one batch is one zmm register,
+     * with AVX2 two ymm registers. Debian's deal.II has no SIMD
+     * (VectorizedArray<double> has one lane), so the kernel does its own.
+     */
+    typedef double v8d __attribute__((vector_size(64)));
+    static_assert(W == 8, "the vector kernel is written for 8 lanes");
+
+    inline v8d
+    load(const double *p)
+    {
+      v8d x;
+      __builtin_memcpy(&x, p, sizeof(x));
+      return x;
+    }
+    inline void
+    store(double *p, const v8d &x)
+    {
+      __builtin_memcpy(p, &x, sizeof(x));
+    }
+
+    /**
      * Element forces of one batch of W cells: one-point total-Lagrangian
      * St. Venant-Kirchhoff stress, element stiffness damping and FB
-     * stiffness hourglass forces. u, v, f are [vertex][component][lane].
-     * The loop over lanes is the vectorised one. Returns the damping power.
+     * stiffness hourglass forces. u, v, f are [vertex][component][lane];
+     * every operation acts on all W lanes at once, and all loops are
+     * unrolled so that the 3x3 tensors stay in registers. Returns the
+     * damping power.
      */
     template <bool with_damping>
     double
     batch_forces(const double *__restrict data,
-                 const double *__restrict ub,
-                 const double *__restrict vb,
-                 double *__restrict fb)
+                   const double *__restrict ub,
+                   const double *__restrict vb,
+                   double *__restrict fb)
     {
-      double power = 0;
-#pragma omp simd reduction(+ : power)
-      for (unsigned int l = 0; l < W; ++l)
+      const v8d V0 = load(data + Field::volume * W);
+      const v8d la = load(data + Field::lambda * W);
+      const v8d mu = load(data + Field::mu * W);
+      const v8d ka = load(data + Field::kappa * W);
+
+      v8d H[3][3] = {};
+#pragma GCC unroll 8
+      for (unsigned int a = 0; a < 8; ++a)
         {
-          const double V0 = data[Field::volume * W + l];
-          const double la = data[Field::lambda * W + l];
-          const double mu = data[Field::mu * W + l];
-          const double ka = data[Field::kappa * W + l];
-
-          // displacement gradient H = sum_a u_a (x) b_a
-          double H[3][3] = {};
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                H[i][j] += ub[(a * 3 + i) * W + l] * data[(Field::b + a * 3 + j) * W + l];
-
-          // Green-Lagrange strain E = (H + H^T + H^T H)/2
-          double E[3][3];
+          v8d b[3];
+#pragma GCC unroll 3
+          for (unsigned int j = 0; j < 3; ++j)
+            b[j] = load(data + (Field::b + a * 3 + j) * W);
+#pragma GCC unroll 3
           for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              {
-                double hth = 0;
-                for (unsigned int k = 0; k < 3; ++k)
-                  hth += H[k][i] * H[k][j];
-                E[i][j] = 0.5 * (H[i][j] + H[j][i] + hth);
-              }
-          const double trE = E[0][0] + E[1][1] + E[2][2];
-          double       S[3][3];
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              S[i][j] = 2. * mu * E[i][j] + (i == j ? la * trE : 0.);
-
-          if constexpr (with_damping)
             {
-              // Edot = (F^T L + L^T F)/2, L = sum_a v_a (x) b_a
-              const double beta = data[Field::beta * W + l];
-              double       L[3][3] = {};
-              for (unsigned int a = 0; a < 8; ++a)
-                for (unsigned int i = 0; i < 3; ++i)
-                  for (unsigned int j = 0; j < 3; ++j)
-                    L[i][j] += vb[(a * 3 + i) * W + l] *
-                               data[(Field::b + a * 3 + j) * W + l];
-              double Ed[3][3];
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  {
-                    double ftl = 0;
-                    for (unsigned int k = 0; k < 3; ++k)
-                      ftl += (H[k][i] + (k == i)) * L[k][j] +
-                             L[k][i] * (H[k][j] + (k == j));
-                    Ed[i][j] = 0.5 * ftl;
-                  }
-              const double trEd = Ed[0][0] + Ed[1][1] + Ed[2][2];
-              double       p    = la * trEd * trEd;
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  {
-                    const double sd = beta * (2. * mu * Ed[i][j] + (i == j ? la * trEd : 0.));
-                    S[i][j] += sd;
-                    p += 2. * mu * Ed[i][j] * Ed[i][j];
-                  }
-              power += beta * V0 * p;
+              const v8d ua = load(ub + (a * 3 + i) * W);
+#pragma GCC unroll 3
+              for (unsigned int j = 0; j < 3; ++j)
+                H[i][j] += ua * b[j];
             }
+        }
 
-          // hourglass generalised displacements g_alpha = gamma_alpha . u
-          double g[4][3];
-          for (unsigned int al = 0; al < 4; ++al)
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                double s = 0;
-                for (unsigned int a = 0; a < 8; ++a)
-                  s += hg[al][a] * ub[(a * 3 + i) * W + l];
-                for (unsigned int j = 0; j < 3; ++j)
-                  s -= data[(Field::c + al * 3 + j) * W + l] * H[i][j];
-                g[al][i] = ka * s; // hourglass generalised force
-              }
+      v8d E[3][3];
+#pragma GCC unroll 3
+      for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            v8d hth = H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j];
+            E[i][j] = 0.5 * (H[i][j] + H[j][i] + hth);
+          }
+      const v8d trE = E[0][0] + E[1][1] + E[2][2];
+      v8d       S[3][3];
+#pragma GCC unroll 3
+      for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+        for (unsigned int j = 0; j < 3; ++j)
+          S[i][j] = 2. * mu * E[i][j];
+      S[0][0] += la * trE;
+      S[1][1] += la * trE;
+      S[2][2] += la * trE;
 
-          // T = V0 F S - sum_alpha Q_alpha (x) c_alpha
-          double T[3][3];
+      v8d power = {};
+      if constexpr (with_damping)
+        {
+          const v8d beta    = load(data + Field::beta * W);
+          v8d       L[3][3] = {};
+#pragma GCC unroll 8
+          for (unsigned int a = 0; a < 8; ++a)
+            {
+              v8d b[3];
+#pragma GCC unroll 3
+              for (unsigned int j = 0; j < 3; ++j)
+                b[j] = load(data + (Field::b + a * 3 + j) * W);
+#pragma GCC unroll 3
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  const v8d va = load(vb + (a * 3 + i) * W);
+#pragma GCC unroll 3
+                  for (unsigned int j = 0; j < 3; ++j)
+                    L[i][j] += va * b[j];
+                }
+            }
+          // F = I + H
+          v8d Fd[3][3];
+#pragma GCC unroll 3
           for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+            for (unsigned int j = 0; j < 3; ++j)
+              Fd[i][j] = H[i][j] + (i == j ? 1. : 0.);
+          v8d Ed[3][3];
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
             for (unsigned int j = 0; j < 3; ++j)
               {
-                double fs = S[i][j];
+                v8d ftl = {};
+#pragma GCC unroll 3
                 for (unsigned int k = 0; k < 3; ++k)
-                  fs += H[i][k] * S[k][j];
-                double q = 0;
-                for (unsigned int al = 0; al < 4; ++al)
-                  q += g[al][i] * data[(Field::c + al * 3 + j) * W + l];
-                T[i][j] = V0 * fs - q;
+                  ftl += Fd[k][i] * L[k][j] + L[k][i] * Fd[k][j];
+                Ed[i][j] = 0.5 * ftl;
               }
-
-          // f_a = T b_a + sum_alpha h_alpha,a Q_alpha
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int i = 0; i < 3; ++i)
+          const v8d trEd = Ed[0][0] + Ed[1][1] + Ed[2][2];
+          v8d       p    = la * trEd * trEd;
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+            for (unsigned int j = 0; j < 3; ++j)
               {
-                double s = 0;
-                for (unsigned int j = 0; j < 3; ++j)
-                  s += T[i][j] * data[(Field::b + a * 3 + j) * W + l];
-                for (unsigned int al = 0; al < 4; ++al)
-                  s += hg[al][a] * g[al][i];
-                fb[(a * 3 + i) * W + l] = s;
+                S[i][j] += beta * (2. * mu * Ed[i][j] + (i == j ? la * trEd : v8d{}));
+                p += 2. * mu * Ed[i][j] * Ed[i][j];
               }
+          power = beta * V0 * p;
         }
-      return power;
+
+      v8d g[4][3];
+#pragma GCC unroll 4
+      for (unsigned int al = 0; al < 4; ++al)
+        {
+          v8d c[3];
+#pragma GCC unroll 3
+          for (unsigned int j = 0; j < 3; ++j)
+            c[j] = load(data + (Field::c + al * 3 + j) * W);
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              v8d s = {};
+#pragma GCC unroll 8
+              for (unsigned int a = 0; a < 8; ++a)
+                s = hg[al][a] > 0 ? s + load(ub + (a * 3 + i) * W) : s - load(ub + (a * 3 + i) * W);
+              s -= c[0] * H[i][0] + c[1] * H[i][1] + c[2] * H[i][2];
+              g[al][i] = ka * s;
+            }
+        }
+
+      v8d T[3][3];
+#pragma GCC unroll 3
+      for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            v8d fs = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
+            T[i][j] = V0 * fs;
+          }
+#pragma GCC unroll 4
+      for (unsigned int al = 0; al < 4; ++al)
+        {
+          v8d c[3];
+#pragma GCC unroll 3
+          for (unsigned int j = 0; j < 3; ++j)
+            c[j] = load(data + (Field::c + al * 3 + j) * W);
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+            for (unsigned int j = 0; j < 3; ++j)
+              T[i][j] -= g[al][i] * c[j];
+        }
+
+#pragma GCC unroll 8
+      for (unsigned int a = 0; a < 8; ++a)
+        {
+          v8d b[3];
+#pragma GCC unroll 3
+          for (unsigned int j = 0; j < 3; ++j)
+            b[j] = load(data + (Field::b + a * 3 + j) * W);
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              v8d s = T[i][0] * b[0] + T[i][1] * b[1] + T[i][2] * b[2];
+#pragma GCC unroll 4
+              for (unsigned int al = 0; al < 4; ++al)
+                s = hg[al][a] > 0 ? s + g[al][i] : s - g[al][i];
+              store(fb + (a * 3 + i) * W, s);
+            }
+        }
+      double sum = 0;
+      for (unsigned int l = 0; l < W; ++l)
+        sum += power[l];
+      return sum;
     }
 
 
@@ -183,6 +265,20 @@ namespace WheelRail
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
             H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
+    }
+
+
+
+    using Clock = std::chrono::steady_clock;
+
+    /** Seconds since @p t0; sets @p t0 to now. */
+    inline double
+    lap(Clock::time_point &t0)
+    {
+      const Clock::time_point t1 = Clock::now();
+      const double            s  = std::chrono::duration<double>(t1 - t0).count();
+      t0                         = t1;
+      return s;
     }
 
 
@@ -842,6 +938,7 @@ namespace WheelRail
                                   const bool        with_contact,
                                   const bool        advance)
   {
+    Clock::time_point clock = Clock::now();
     f_out = 0.;
     const double *U = u_in.begin();
     const double *V = v_in ? v_in->begin() : nullptr;
@@ -876,10 +973,16 @@ namespace WheelRail
                 F[idx + d] += fb[(a * 3 + d) * W + l];
             }
       }
+    times.elements += lap(clock);
     if (with_contact && contact != nullptr)
-      contact->add_forces(u_in, dt, advance, f_out);
+      {
+        contact->add_forces(u_in, dt, advance, f_out);
+        times.contact += lap(clock);
+      }
     condense(f_out);
+    times.update += lap(clock);
     f_out.compress(VectorOperation::add);
+    times.communication += lap(clock);
     return power;
   }
 
@@ -1059,7 +1162,8 @@ namespace WheelRail
     const bool   first = (n_steps == 0);
     const double h     = first ? 0.5 * dt : dt; // v_{1/2} = v_0 + dt/2 a_0
 
-    double gravity_work = 0;
+    Clock::time_point clock        = Clock::now();
+    double            gravity_work = 0;
     if (energies)
       {
         energies->time = t;
@@ -1067,10 +1171,12 @@ namespace WheelRail
         strain_energies(*energies);
         for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
           gravity_work += f_ext.local_element(i) * (u.local_element(i) - u0.local_element(i));
+        times.energies += lap(clock);
       }
 
     const bool   damping = prm.solver.damping_model != "none";
     const double power   = assemble_forces(u, damping ? &v : nullptr, f, true, true);
+    clock                = Clock::now();
 
     // applied forces at t_n (enter f with the sign of internal forces)
     double work_step = 0;
@@ -1223,13 +1329,17 @@ namespace WheelRail
       }
     damping_dissipation += h * power;
     boundary_work += work_step;
+    times.update += lap(clock);
 
     u.update_ghost_values();
     v.update_ghost_values();
+    times.communication += lap(clock);
     distribute(u);
     distribute(v);
+    times.update += lap(clock);
     t = t_new;
     ++n_steps;
+    ++times.steps;
   }
 
 

@@ -866,6 +866,15 @@ namespace WheelRail
                       Patterns::Integer(0, 2),
                       "Component (0 = x, 1 = y, 2 = z) used by the "
                       "verification checks on the probe [-].");
+    prm.declare_entry("Timing warm-up steps",
+                      "0",
+                      Patterns::Integer(0, 1000000000),
+                      "Steps before the timers of the explicit run start [-], "
+                      "range [0, 1e9]: the time split (elements, contact, "
+                      "update, communication, output) and ns per "
+                      "element-step printed at the end and written to "
+                      "timing.csv count only the steps after them (a "
+                      "benchmark leaves out the first, cold steps).");
     prm.leave_subsection();
   }
 
@@ -880,6 +889,7 @@ namespace WheelRail
     vtu_interval        = prm.get_integer("VTU interval");
     probe_point         = Point<3>(get_vector(prm, "Probe point"));
     probe_component     = prm.get_integer("Probe component");
+    timing_warmup_steps = prm.get_integer("Timing warm-up steps");
     prm.leave_subsection();
   }
 
@@ -946,6 +956,16 @@ namespace WheelRail
                       Patterns::Double(0, 10),
                       "Largest accepted ratio of hourglass-mode energy to "
                       "internal energy [-], range [0, 10].");
+    prm.declare_entry("Round-off sensitive",
+                      "false",
+                      Patterns::Bool(),
+                      "The run is chaotic: round-off differences (another "
+                      "compiler, summation order, number of ranks) grow to "
+                      "percent-level differences of instantaneous values, "
+                      "as in rolling with velocity-weakening friction. In "
+                      "test mode only what is robust is printed: no step "
+                      "rows, patch lines or end summary; the checks' values "
+                      "with two digits and their verdict.");
     prm.declare_entry("Clamped",
                       "false",
                       Patterns::Bool(),
@@ -975,6 +995,7 @@ namespace WheelRail
     wave_threshold  = prm.get_double("Wave threshold");
     hourglass_limit = prm.get_double("Hourglass limit");
     bar_clamped     = prm.get_bool("Clamped");
+    round_off_sensitive = prm.get_bool("Round-off sensitive");
     prm.leave_subsection();
   }
 

@@ -58,6 +58,17 @@ namespace WheelRail
     }
   };
 
+  /** Wall seconds of this rank spent in the parts of the explicit steps. */
+  struct StepTimes
+  {
+    double elements      = 0; ///< element kernel: gather, forces, scatter
+    double contact       = 0; ///< search, projection, friction, contact forces
+    double update        = 0; ///< central-difference update, constraints, axle
+    double communication = 0; ///< ghost exchange and force compression
+    double energies      = 0; ///< energies at statistics steps
+    unsigned long steps  = 0; ///< steps timed
+  };
+
   /** Mesh size and quality figures over all cells (all ranks). */
   struct MeshQuality
   {
@@ -193,6 +204,18 @@ namespace WheelRail
     /** Internal force f_int(u) without damping, condensed and compressed. */
     void
     compute_internal_force(VectorType &force);
+
+    /** Times of the steps since the last reset_times(). */
+    const StepTimes &
+    step_times() const
+    {
+      return times;
+    }
+    void
+    reset_times()
+    {
+      times = StepTimes();
+    }
 
     /** Stress of every locally owned cell (in active cell index order). */
     std::vector<CellStress>
@@ -354,6 +377,7 @@ namespace WheelRail
     unsigned long n_steps = 0;
     double     damping_dissipation = 0;
     double     boundary_work       = 0;
+    StepTimes  times;
   };
 } // namespace WheelRail
 

@@ -235,6 +235,7 @@ namespace WheelRail
     unsigned int vtu_interval;
     Point<3>     probe_point;
     unsigned int probe_component;
+    unsigned int timing_warmup_steps;
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);
@@ -250,6 +251,7 @@ namespace WheelRail
     double       tolerance;
     double       wave_threshold;
     double       hourglass_limit;
+    bool         round_off_sensitive; ///< test mode prints robust values only
     bool         bar_clamped;
 
     static void declare_parameters(ParameterHandler &prm);

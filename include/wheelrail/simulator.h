@@ -63,6 +63,18 @@ namespace WheelRail
     record_probe();
     void
     report(const Energies &e, const double wall_seconds);
+    /** Test mode of a round-off sensitive (chaotic) run: print only what
+     *  is robust (Verification/Round-off sensitive). */
+    bool
+    robust_output_only() const
+    {
+      return parameters.problem.test_mode && parameters.verification.round_off_sensitive;
+    }
+    /** Time split, ns per element-step, peak memory and the projected
+     *  full paper run: on the screen and in timing.csv. */
+    void
+    report_timing(const double wall_seconds, const double output_seconds,
+                  const unsigned long n_steps) const;
     void
     add_statistics_row(const Energies &e);
     void
