@@ -30,11 +30,12 @@ namespace WheelRail
       constexpr unsigned int c         = 24; ///< 12: h_alpha . X_j, [alpha*3+j]
       constexpr unsigned int volume    = 36; ///< V0
       constexpr unsigned int kappa     = 37; ///< hourglass stiffness
-      constexpr unsigned int kappa_ref = 38; ///< with QM = 0.1
-      constexpr unsigned int beta      = 39; ///< damping time constant [s]
-      constexpr unsigned int lambda    = 40;
-      constexpr unsigned int mu        = 41;
-      constexpr unsigned int n_fields  = 42;
+      constexpr unsigned int beta      = 38; ///< damping time constant [s]
+      constexpr unsigned int n_fields  = 39;
+      // Only what the kernel reads streams through it every step: the
+      // Lame constants are the same for all cells (one material), the
+      // hourglass stiffness with the reference QM lives in its own array
+      // (energies only).
     } // namespace Field
 
     /** Reference hourglass coefficient of the hourglass-mode indicator. */
@@ -82,13 +83,15 @@ namespace WheelRail
     template <bool with_damping>
     double
     batch_forces(const double *__restrict data,
-                   const double *__restrict ub,
-                   const double *__restrict vb,
-                   double *__restrict fb)
+                 const double lambda,
+                 const double mu_,
+                 const double *__restrict ub,
+                 const double *__restrict vb,
+                 double *__restrict fb)
     {
       const v8d V0 = load(data + Field::volume * W);
-      const v8d la = load(data + Field::lambda * W);
-      const v8d mu = load(data + Field::mu * W);
+      const v8d la = v8d{} + lambda;
+      const v8d mu = v8d{} + mu_;
       const v8d ka = load(data + Field::kappa * W);
 
       v8d H[3][3] = {};
@@ -454,6 +457,9 @@ namespace WheelRail
     batch_nodes.assign(std::size_t(n_batches) * 8 * W, 0);
     batch_cell_index.assign(std::size_t(n_batches) * W, numbers::invalid_unsigned_int);
     batch_material.assign(std::size_t(n_batches) * W, numbers::invalid_material_id);
+    batch_kappa_ref.assign(std::size_t(n_batches) * W, 0.);
+    lame_lambda = lambda;
+    lame_mu     = mu;
 
     FE_Q<dim>     fe_scalar(1);
     QGauss<dim>   quadrature(2);
@@ -545,10 +551,8 @@ namespace WheelRail
           const double k_unit = (lambda + 2. * mu) * BB / (8. * V0);
           data[Field::volume * W + lane]    = V0;
           data[Field::kappa * W + lane]     = qm * k_unit;
-          data[Field::kappa_ref * W + lane] = reference_hourglass_coefficient * k_unit;
+          batch_kappa_ref[std::size_t(batch) * W + lane] = reference_hourglass_coefficient * k_unit;
           data[Field::beta * W + lane]      = beta;
-          data[Field::lambda * W + lane]    = lambda;
-          data[Field::mu * W + lane]        = mu;
 
           for (unsigned int a = 0; a < 8; ++a)
             {
@@ -962,8 +966,8 @@ namespace WheelRail
                 for (unsigned int d = 0; d < 3; ++d)
                   vb[(a * 3 + d) * W + l] = V[idx + d];
             }
-        power += damping ? batch_forces<true>(data, ub, vb, fb) :
-                           batch_forces<false>(data, ub, vb, fb);
+        power += damping ? batch_forces<true>(data, lame_lambda, lame_mu, ub, vb, fb) :
+                           batch_forces<false>(data, lame_lambda, lame_mu, ub, vb, fb);
         const unsigned int n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int a = 0; a < 8; ++a)
           for (unsigned int l = 0; l < n_valid; ++l)
@@ -1068,7 +1072,7 @@ namespace WheelRail
         {
           const double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
           const auto    D    = [&](const unsigned int field) { return data[field * W + l]; };
-          const double  V0 = D(Field::volume), la = D(Field::lambda), mu = D(Field::mu),
+          const double  V0 = D(Field::volume), la = lame_lambda, mu = lame_mu,
                        ka = D(Field::kappa);
           // gamma_alpha,a = h_alpha,a - c_alpha . b_a
           double gamma[4][8];
@@ -1132,7 +1136,7 @@ namespace WheelRail
                 }
             const double trE = E[0][0] + E[1][1] + E[2][2];
             ie += data[Field::volume * W + l] *
-                  (0.5 * data[Field::lambda * W + l] * trE * trE + data[Field::mu * W + l] * EE);
+                  (0.5 * lame_lambda * trE * trE + lame_mu * EE);
             double gg = 0;
             for (unsigned int al = 0; al < 4; ++al)
               for (unsigned int i = 0; i < 3; ++i)
@@ -1145,7 +1149,7 @@ namespace WheelRail
                   gg += s * s;
                 }
             hge += 0.5 * data[Field::kappa * W + l] * gg;
-            hge_ref += 0.5 * data[Field::kappa_ref * W + l] * gg;
+            hge_ref += 0.5 * batch_kappa_ref[std::size_t(batch) * W + l] * gg;
           }
       }
     e.internal            = ie;
@@ -1364,9 +1368,9 @@ namespace WheelRail
                 H[i][j] = h[i][j];
             const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
             const Tensor<2, dim> E = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
-            const Tensor<2, dim> S = data[Field::lambda * W + l] * trace(E) *
+            const Tensor<2, dim> S = lame_lambda * trace(E) *
                                        Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
-                                     2. * data[Field::mu * W + l] * E;
+                                     2. * lame_mu * E;
             const Tensor<2, dim> sigma = F * S * transpose(F) / determinant(F);
             const Tensor<2, dim> dev   = sigma - trace(sigma) / 3. *
                                                  Tensor<2, dim>(unit_symmetric_tensor<dim>());

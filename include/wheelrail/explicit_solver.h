@@ -340,6 +340,9 @@ namespace WheelRail
     std::vector<unsigned int>      batch_nodes; ///< [batch][vertex][lane]
     std::vector<unsigned int>      batch_cell_index; ///< active cell index
     std::vector<types::material_id> batch_material;
+    std::vector<double>            batch_kappa_ref; ///< hourglass stiffness with QM = 0.1
+    double                         lame_lambda = 0; ///< of the one material [Pa]
+    double                         lame_mu     = 0;
 
     // Nodal data (local indices of the ghosted vectors).
     std::vector<Point<dim>> node_points; ///< reference position of each DoF
