@@ -7,6 +7,8 @@
 #   ./run.sh bench [N ...]      same set-up, then the speed benchmark prm/bench_paper.prm
 #                               on 1 and 2 ranks (or the rank counts N given); figures
 #                               appended to bench/results.csv
+#   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
+#                               directory (and the comparison with a second run) into DIR/plots
 #   ./run.sh build              set-up and build only
 #   ./run.sh help               this text
 set -euo pipefail
@@ -98,13 +100,19 @@ case "$verb" in
   build)
     build
     ;;
+  plot)
+    shift
+    install_missing_packages
+    [ $# -ge 1 ] || { echo "run.sh: plot needs a run's output directory" >&2; exit 1; }
+    /usr/bin/python3 scripts/plot.py "$@"
+    ;;
   bench)
     shift
     build
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -114,7 +122,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,11p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac

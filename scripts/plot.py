@@ -112,6 +112,17 @@ def wheel_position(stats_names, stats, t):
     return np.interp(t, column(stats_names, stats, "time"), column(stats_names, stats, "wheel x"))
 
 
+def zoom(ax, patch, margin=0.004, equal=True):
+    """Limit the axes to the contact area of @p patch plus a margin [m]."""
+    c = patch["in_contact"] > 0
+    if not c.any():
+        return
+    x, y = patch["x"][c], patch["y"][c]
+    ax.set_xlim((x.min() - margin) * 1e3, (x.max() + margin) * 1e3)
+    if equal:
+        ax.set_ylim((y.min() - margin) * 1e3, (y.max() + margin) * 1e3)
+
+
 def smooth(values, n):
     n = max(1, min(n, len(values)))
     kernel = np.ones(n) / n
@@ -120,7 +131,7 @@ def smooth(values, n):
 
 def dominant_peaks(f, amplitude, count=3, min_separation=5):
     """The largest local maxima of the spectrum (not the zero frequency)."""
-    order = np.argsort(amplitude[1:])[::-1] + 1
+    order = np.argsort(amplitude[3:])[::-1] + 3
     peaks = []
     for i in order:
         if all(abs(i - j) >= min_separation for j in peaks):
@@ -187,6 +198,7 @@ def plot_run(run, other, out):
         ax.scatter(p["x"][~c] * 1e3, p["y"][~c] * 1e3, s=4, c="0.85", label="not in contact")
         ax.scatter(p["x"][c] * 1e3, p["y"][c] * 1e3, s=10, c="tab:red", label="in contact (eq. 4)")
         ax.set_title("nodes in contact at t: %d" % c.sum())
+        zoom(ax, p)
         ax.set_xlabel("x [mm]")
         ax.set_ylabel("y [mm]")
         ax.set_aspect("equal")
@@ -205,6 +217,7 @@ def plot_run(run, other, out):
                 sel = d == value
                 ax.scatter(xy[sel, 0], xy[sel, 1], s=8, c=colour, label="%s (%d)" % (label, sel.sum()))
             ax.set_title("difference in contact nodes")
+            zoom(ax, p)
             ax.set_xlabel("x [mm]")
             ax.set_aspect("equal")
             ax.legend(loc="upper right", fontsize=7)
@@ -225,12 +238,13 @@ def plot_run(run, other, out):
         ax.set_xlabel("x [mm] (rolling direction ->)")
         ax.set_ylabel("[MPa]")
         ax.set_title("along y = %.3g mm at instant t" % (p["y"][rows[0]] * 1e3))
+        zoom(ax, p, 0.006, equal=False)
         ax.legend(fontsize=8)
         rep.save(fig, "fig04_pressure_shear.png",
                  "Pressure and surface shear stress along the longitudinal axis (paper Figs. 4, 11, 15)")
 
         # Figs. 5-7: adhesion/slip maps by eq. 5 and eq. 6
-        fig, axes = plt.subplots(2, 3, figsize=(13, 7.5), squeeze=False)
+        fig, axes = plt.subplots(2, 3, figsize=(13, 8), squeeze=False)
         for j, instant in enumerate(INSTANTS):
             q = patches[instant]
             c = q["in_contact"] > 0
@@ -247,6 +261,7 @@ def plot_run(run, other, out):
                 ax.scatter(q["x"][slip] * 1e3, q["y"][slip] * 1e3, s=10, c="tab:red",
                            label="slip (%d)" % slip.sum())
                 ax.set_title("%s, by %s" % (instant, label))
+                zoom(ax, q)
                 ax.set_aspect("equal")
                 ax.set_xlabel("x [mm]")
                 if j == 0:
@@ -286,7 +301,8 @@ def plot_run(run, other, out):
                 ax.plot(xw, v, lw=0.7, c=colour, label="v_%s" % comp)
                 if len(t) > 16:
                     dt = np.median(np.diff(t))
-                    v0 = v - v.mean()
+                    # remove the trend (rolling in, load build-up) before the FFT
+                    v0 = v - np.polyval(np.polyfit(t - t[0], v, 1), t - t[0])
                     amp = np.abs(np.fft.rfft(v0 * np.hanning(len(v0)))) * 2 / len(v0)
                     f = np.fft.rfftfreq(len(v0), dt) * 1e-3
                     sax.semilogy(f, amp + 1e-30, lw=0.7, c=colour, label="v_%s" % comp)
