@@ -866,6 +866,13 @@ namespace WheelRail
                       Patterns::Integer(0, 2),
                       "Component (0 = x, 1 = y, 2 = z) used by the "
                       "verification checks on the probe [-].");
+    prm.declare_entry("Divergence limit",
+                      "0.5",
+                      Patterns::Double(1e-12, 1e6),
+                      "The run stops with a diagnosis when the relative energy "
+                      "balance error exceeds this [-], range [1e-12, 1e6] "
+                      "(an exploding energy; NaN or infinite energies always "
+                      "stop it). Checked at statistics steps.");
     prm.declare_entry("Timing warm-up steps",
                       "0",
                       Patterns::Integer(0, 1000000000),
@@ -890,6 +897,7 @@ namespace WheelRail
     probe_point         = Point<3>(get_vector(prm, "Probe point"));
     probe_component     = prm.get_integer("Probe component");
     timing_warmup_steps = prm.get_integer("Timing warm-up steps");
+    divergence_limit    = prm.get_double("Divergence limit");
     prm.leave_subsection();
   }
 

@@ -1047,6 +1047,78 @@ namespace WheelRail
 
 
 
+  std::string
+  Simulator::divergence_message(const unsigned long n, const Energies &e) const
+  {
+    // the first non-finite (or, if all are finite, the fastest) DoF of
+    // each rank; the rank with the worst one tells
+    const VectorType &u = solver->displacement(), &v = solver->velocity();
+    unsigned int      worst = numbers::invalid_unsigned_int;
+    double            worst_value = -1;
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      {
+        const double ui = u.local_element(i), vi = v.local_element(i);
+        const double value = (!std::isfinite(ui) || !std::isfinite(vi)) ?
+                               std::numeric_limits<double>::infinity() :
+                               std::abs(vi);
+        if (value > worst_value)
+          {
+            worst_value = value;
+            worst       = i;
+          }
+      }
+    const double global_worst = Utilities::MPI::max(worst_value, mpi_communicator);
+    const unsigned int my_rank = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int teller  = Utilities::MPI::min(
+      worst_value == global_worst ? my_rank : Utilities::MPI::n_mpi_processes(mpi_communicator),
+      mpi_communicator);
+    std::ostringstream where;
+    if (my_rank == teller && worst != numbers::invalid_unsigned_int)
+      {
+        const Point<dim> &X = solver->support_points()[worst];
+        const auto        m = solver->dof_material(worst);
+        const char *body = m == Geometry::MaterialIds::wheel ? "wheel" :
+                           m == Geometry::MaterialIds::rail  ? "rail" :
+                           m == Geometry::MaterialIds::bar   ? "bar" :
+                           m == Geometry::MaterialIds::block ? "block" :
+                           m == Geometry::MaterialIds::plate ? "plate" : "unknown body";
+        where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
+              << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
+              << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "
+              << "xyz"[solver->dof_component(worst)] << ", u = " << u.local_element(worst)
+              << " m, v = " << v.local_element(worst) << " m/s"
+              << (solver->boundary_dof_mask()[worst] ? " (a surface node)" : "");
+      }
+    const std::string location =
+      Utilities::MPI::broadcast(mpi_communicator, where.str(), teller);
+
+    const double dt     = solver->time_step();
+    const double stable = solver->stable_time_step();
+    std::ostringstream message;
+    message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
+            << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
+                  "the energy balance error " + fmt(max_balance_error, 3) +
+                    " exceeds Output/Divergence limit " + fmt(parameters.output.divergence_limit) :
+                  std::string("NaN or infinite energy"))
+            << "; " << location << ". Likely cause: ";
+    if (contact && most_contact_nodes > 0)
+      message << "the contact (up to " << most_contact_nodes
+              << " nodes in contact so far), penalty scale factor "
+              << fmt(parameters.contact.penalty_scale)
+              << " (too stiff for the time step " << fmt(dt)
+              << " s, or too soft for the load: Contact/Penalty scale factor, Time "
+                 "integration/Courant factor)";
+    else if (dt > 0.95 * stable)
+      message << "the time step " << fmt(dt) << " s at the stable step " << fmt(stable)
+              << " s (Time integration/Time step, Courant factor)";
+    else
+      message << "an unconstrained body or an initial condition far from equilibrium";
+    message << ". The statistics and probes up to the last statistics row were written.";
+    return message.str();
+  }
+
+
+
   void
   Simulator::run_explicit()
   {
@@ -1094,23 +1166,23 @@ namespace WheelRail
         const Clock::time_point output_start = Clock::now();
         record_probe();
         if (contact)
-          friction_violations += contact->summary().n_violation;
+          {
+            friction_violations += contact->summary().n_violation;
+            most_contact_nodes = std::max(most_contact_nodes, contact->summary().n_contact);
+          }
         if (wheelset && contact)
           write_patch_snapshots();
         if (stats_step)
           {
             const double wall = timer.wall_time();
-            if (!std::isfinite(e.kinetic) || !std::isfinite(e.internal))
+            if (!std::isfinite(e.kinetic) || !std::isfinite(e.internal) ||
+                !std::isfinite(e.hourglass) || max_balance_error > parameters.output.divergence_limit)
               {
                 write_statistics();
                 write_probe();
-                AssertThrow(false,
-                            ExcMessage("The solution diverged (NaN or infinite energy) at step " +
-                                       std::to_string(n) + ", t = " + fmt(n * dt) +
-                                       " s. Likely cause: a time step above the stable limit "
-                                       "(step used " + fmt(dt) + " s, stable " +
-                                       fmt(solver->stable_time_step()) +
-                                       " s), or an unconstrained body."));
+                if (contact)
+                  write_contact_nodes("contact_nodes.csv");
+                AssertThrow(false, ExcMessage(divergence_message(n, e)));
               }
             if (!have_initial_energies)
               {

@@ -236,6 +236,7 @@ namespace WheelRail
     Point<3>     probe_point;
     unsigned int probe_component;
     unsigned int timing_warmup_steps;
+    double       divergence_limit; ///< largest relative energy balance error
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

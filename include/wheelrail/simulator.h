@@ -70,6 +70,9 @@ namespace WheelRail
     {
       return parameters.problem.test_mode && parameters.verification.round_off_sensitive;
     }
+    /** Where and why a run diverged (all ranks call it). */
+    std::string
+    divergence_message(const unsigned long n, const Energies &e) const;
     /** Time split, ns per element-step, peak memory and the projected
      *  full paper run: on the screen and in timing.csv. */
     void
@@ -160,6 +163,7 @@ namespace WheelRail
     };
     std::vector<Sample> samples;
     unsigned long       friction_violations = 0;
+    unsigned int        most_contact_nodes  = 0; ///< largest contact node count so far
   };
 } // namespace WheelRail
 
