@@ -9,6 +9,8 @@
 #                               appended to bench/results.csv
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
 #                               directory (and the comparison with a second run) into DIR/plots
+#   ./run.sh sweep BASE.prm [options]  traction sweep over mu_n and friction laws with its
+#                               plots (scripts/sweep.py --help)
 #   ./run.sh build              set-up and build only
 #   ./run.sh help               this text
 set -euo pipefail
@@ -106,13 +108,18 @@ case "$verb" in
     [ $# -ge 1 ] || { echo "run.sh: plot needs a run's output directory" >&2; exit 1; }
     /usr/bin/python3 scripts/plot.py "$@"
     ;;
+  sweep)
+    shift
+    build
+    /usr/bin/python3 scripts/sweep.py "$@"
+    ;;
   bench)
     shift
     build
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -122,7 +129,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac

@@ -1,0 +1,196 @@
+#!/usr/bin/python3
+"""Run a traction sweep of wheelrail cases and plot it (paper Figs. 14, 15).
+
+Usage:
+    scripts/sweep.py BASE.prm [--mu 0.1,0.2,0.3,0.4,0.5] [--laws constant,exponential]
+                     [--np N] [--out DIR] [--wheelrail PATH] [--plot-only] [--check]
+
+For every friction law and nominal traction coefficient mu_n, a case file
+DIR/LAW_muNN.prm is written (it includes BASE.prm and sets the law, the
+coefficients of SPEC 4 - constant: f = 0.5; exponential: f_S = 0.5,
+f_D = 0.32, k = 6 s/m - mu_n and its output directory) and run, one after
+another, on N MPI ranks. Then DIR holds:
+
+  sweep.csv                 law, mu_n, mean mu_a and F_N over the second half
+                            of each run, mu_a at the end
+  fig14_traction.png        achieved mu_a against mu_n for both laws, with the
+                            saturation curve (mu_a = mu_n up to f, f for
+                            Coulomb; f_D for the exponential law)
+  fig15_shear_axis.png      surface shear stress along y = 0 at instant t for
+                            all runs, and the pressure
+  report.html               both figures and the table
+
+--plot-only skips the runs (re-plots existing output); --check verifies that
+the figures show finite data (exit status 1 if not).
+"""
+import argparse
+import html
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import plot  # noqa: E402  (scripts/plot.py: readers and the figure check)
+
+import matplotlib  # noqa: E402
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+LAWS = {
+    "constant": {"Friction law": "constant", "Static friction coefficient": "0.5"},
+    "exponential": {"Friction law": "exponential", "Static friction coefficient": "0.5",
+                    "Dynamic friction coefficient": "0.32", "Decay coefficient": "6"},
+}
+
+
+def case_name(law, mu):
+    return "%s_mu%02d" % (law, round(mu * 100))
+
+
+def write_case(base, out, law, mu):
+    name = case_name(law, mu)
+    lines = ["# wheelrail sweep case: %s law, mu_n = %g (written by scripts/sweep.py)" % (law, mu),
+             "include %s" % os.path.abspath(base),
+             "subsection Problem",
+             "  set Output directory = %s" % os.path.abspath(os.path.join(out, name)),
+             "end",
+             "subsection Contact"]
+    lines += ["  set %s = %s" % kv for kv in LAWS[law].items()]
+    lines += ["end", "subsection Wheelset", "  set Nominal traction coefficient = %g" % mu, "end", ""]
+    path = os.path.join(out, name + ".prm")
+    with open(path, "w") as f:
+        f.write("\n".join(lines))
+    return path, os.path.join(out, name)
+
+
+def run_case(prm, ranks, exe, log):
+    cmd = [exe, prm]
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    with open(log, "w") as f:
+        result = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env)
+    if result.returncode != 0:
+        sys.exit("sweep.py: %s failed (exit status %d), see %s" % (prm, result.returncode, log))
+
+
+def summarise(run):
+    names, stats = plot.read_statistics(run)
+    half = stats[len(stats) // 2:]
+    fn, fl = plot.column(names, half, "F_N"), plot.column(names, half, "F_L")
+    mu_end = plot.column(names, stats, "mu_a")[-1]
+    return fl.mean() / fn.mean(), fn.mean(), mu_end
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("base", help="parameter file of the case to sweep (a rolling case)")
+    parser.add_argument("--mu", default="0.1,0.2,0.3,0.4,0.5", help="nominal traction coefficients")
+    parser.add_argument("--laws", default="constant,exponential", help="friction laws")
+    parser.add_argument("--np", type=int, default=1, help="MPI ranks per run")
+    parser.add_argument("--out", default="results/sweep", help="sweep directory")
+    parser.add_argument("--wheelrail", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                                            "..", "build", "wheelrail"))
+    parser.add_argument("--plot-only", action="store_true")
+    parser.add_argument("--check", action="store_true")
+    args = parser.parse_args()
+
+    mus = [float(m) for m in args.mu.split(",") if m.strip()]
+    laws = [l.strip() for l in args.laws.split(",") if l.strip()]
+    for law in laws:
+        if law not in LAWS:
+            sys.exit("sweep.py: unknown law '%s' (constant, exponential)" % law)
+    if not os.path.isfile(args.base):
+        sys.exit("sweep.py: no such parameter file: %s" % args.base)
+    os.makedirs(args.out, exist_ok=True)
+
+    runs = []
+    for law in laws:
+        for mu in mus:
+            prm, run = write_case(args.base, args.out, law, mu)
+            if not args.plot_only:
+                print("sweep.py: running %s" % prm, flush=True)
+                run_case(prm, args.np, args.wheelrail, run + ".log")
+            runs.append((law, mu, run))
+
+    rows = []
+    for law, mu, run in runs:
+        mu_a, fn, mu_end = summarise(run)
+        rows.append((law, mu, mu_a, fn, mu_end))
+    csv = os.path.join(args.out, "sweep.csv")
+    with open(csv + ".tmp", "w") as f:
+        f.write("law,mu_n,mean_mu_a_second_half,mean_F_N_second_half_N,mu_a_end\n")
+        for r in rows:
+            f.write("%s,%g,%.6g,%.6g,%.6g\n" % r)
+    os.replace(csv + ".tmp", csv)
+
+    rep = plot.Report(args.out)
+    fig, ax = plt.subplots(figsize=(6.5, 4.8))
+    grid = np.linspace(0, max(mus) * 1.05, 100)
+    colours = {"constant": "tab:blue", "exponential": "tab:red"}
+    for law in laws:
+        sel = [r for r in rows if r[0] == law]
+        ax.plot([r[1] for r in sel], [r[2] for r in sel], "o-", c=colours[law], label="%s law: mu_a" % law)
+        limit = 0.5 if law == "constant" else 0.32
+        ax.plot(grid, np.minimum(grid, limit), ":", c=colours[law],
+                label="saturation: min(mu_n, %s)" % ("f = 0.5" if law == "constant" else "f_D = 0.32"))
+    ax.set_xlabel("nominal traction coefficient mu_n")
+    ax.set_ylabel("achieved mu_a = F_L / F_N (mean, second half)")
+    ax.set_title("traction against mu_n")
+    ax.legend(fontsize=8)
+    rep.save(fig, "fig14_traction.png",
+             "Achieved traction coefficient against mu_n with the saturation curves (paper Fig. 14)")
+
+    fig, axes = plt.subplots(len(laws), 1, figsize=(7.5, 4 * len(laws)), squeeze=False)
+    for k, law in enumerate(laws):
+        ax = axes[k][0]
+        last = None
+        for (l, mu, run) in runs:
+            if l != law:
+                continue
+            p = plot.read_patch(run, "t")
+            if p is None:
+                continue
+            rows_ = plot.axis_rows(p)
+            ax.plot(p["x"][rows_] * 1e3, p["shear_x"][rows_] * 1e-6, "-", marker=".", label="mu_n = %g" % mu)
+            last = p
+        if last is not None:
+            rows_ = plot.axis_rows(last)
+            ax.plot(last["x"][rows_] * 1e3, last["pressure"][rows_] * 1e-6 * (0.5 if law == "constant" else 0.32),
+                    "k:", label="p f (%s)" % ("f = 0.5" if law == "constant" else "f_D"))
+            plot.zoom(ax, last, 0.006, equal=False)
+        ax.set_title("surface shear stress along y = 0 at instant t, %s law" % law)
+        ax.set_xlabel("x [mm]")
+        ax.set_ylabel("shear stress (x) [MPa]")
+        ax.legend(fontsize=7)
+    rep.save(fig, "fig15_shear_axis.png", "Surface shear stress along the axis for all runs (paper Fig. 15)")
+
+    body = ["<h1>wheelrail traction sweep</h1>", "<p>base case: %s</p>" % html.escape(args.base),
+            "<table border='1' cellpadding='3'><tr><th>law</th><th>mu_n</th><th>mean mu_a</th>"
+            "<th>mean F_N [kN]</th><th>mu_a at the end</th></tr>"]
+    body += ["<tr><td>%s</td><td>%g</td><td>%.4f</td><td>%.2f</td><td>%.4f</td></tr>" %
+             (r[0], r[1], r[2], r[3] * 1e-3, r[4]) for r in rows]
+    body.append("</table>")
+    for name, caption, _ in rep.figures:
+        body.append("<h2>%s</h2><img src='%s' style='max-width:100%%'>" % (html.escape(caption), name))
+    page = os.path.join(args.out, "report.html")
+    with open(page + ".tmp", "w") as f:
+        f.write("<!DOCTYPE html><html><head><meta charset='utf-8'><title>wheelrail sweep</title></head>"
+                "<body>\n%s\n</body></html>\n" % "\n".join(body))
+    os.replace(page + ".tmp", page)
+
+    for r in rows:
+        print("%-12s mu_n %-5g mean mu_a %.4f  mean F_N %.2f kN" % (r[0], r[1], r[2], r[3] * 1e-3))
+    print("sweep: %s, %s" % (csv, page))
+    if args.check:
+        problems = rep.check()
+        for p in problems:
+            print("check failed: " + p)
+        print("check: %d figures, %d problems" % (len(rep.figures), len(problems)))
+        sys.exit(1 if problems else 0)
+
+
+if __name__ == "__main__":
+    main()
