@@ -785,4 +785,68 @@ namespace WheelRail
         pairs.push_back(pair);
       }
   }
+
+
+
+  void
+  PenaltyContact::save(Checkpoint::Writer &out) const
+  {
+    out.vector(node_x);
+    out.vector(node_x_search);
+    out.vector(active_nodes);
+    out.vector(recv_counts);
+    out.vector(recv_displs);
+    out.vector(recv_order);
+    out.vector(owned_active);
+    out.pod<std::uint64_t>(passes.size());
+    for (const Pass &pass : passes)
+      {
+        out.vector(pass.slaves);
+        out.vector(pass.candidate_slaves);
+        out.vector(pass.candidate_faces);
+        out.vector(pass.face_offsets);
+        out.vector(pass.face_lists);
+      }
+    out.pod(totals);
+    out.pod(dissipation);
+    out.pod(damping_loss);
+    out.pod(steps_since_search);
+    out.pod(need_search);
+    out.pod(searches);
+  }
+
+
+
+  void
+  PenaltyContact::load(Checkpoint::Reader &in)
+  {
+    in.vector(node_x);
+    in.vector(node_x_search);
+    in.vector(active_nodes);
+    in.vector(recv_counts);
+    in.vector(recv_displs);
+    in.vector(recv_order);
+    in.vector(owned_active);
+    std::uint64_t n_passes = 0;
+    in.pod(n_passes);
+    AssertThrow(n_passes == passes.size(),
+                ExcMessage("The checkpoint does not fit this run (contact passes differ)."));
+    for (Pass &pass : passes)
+      {
+        const std::size_t n_slaves = pass.slaves.size();
+        in.vector(pass.slaves);
+        AssertThrow(pass.slaves.size() == n_slaves,
+                    ExcMessage("The checkpoint does not fit this run (slave nodes differ)."));
+        in.vector(pass.candidate_slaves);
+        in.vector(pass.candidate_faces);
+        in.vector(pass.face_offsets);
+        in.vector(pass.face_lists);
+      }
+    in.pod(totals);
+    in.pod(dissipation);
+    in.pod(damping_loss);
+    in.pod(steps_since_search);
+    in.pod(need_search);
+    in.pod(searches);
+  }
 } // namespace WheelRail

@@ -1348,6 +1348,55 @@ namespace WheelRail
 
 
 
+  void
+  ExplicitSolver::save(Checkpoint::Writer &out) const
+  {
+    for (const VectorType *x : {&u, &v, &f_ext, &u0})
+      out.array(x->begin(), x->locally_owned_size());
+    out.pod(t);
+    out.pod(dt);
+    out.pod(n_steps);
+    out.pod(damping_dissipation);
+    out.pod(boundary_work);
+    std::vector<double> states;
+    for (const auto &p : prescribed)
+      {
+        states.push_back(p.u_prev);
+        states.push_back(p.v_prev);
+      }
+    out.vector(states);
+  }
+
+
+
+  void
+  ExplicitSolver::load(Checkpoint::Reader &in)
+  {
+    for (VectorType *x : {&u, &v, &f_ext, &u0})
+      {
+        in.array(x->begin(), x->locally_owned_size());
+        x->update_ghost_values();
+      }
+    in.pod(t);
+    in.pod(dt);
+    in.pod(n_steps);
+    in.pod(damping_dissipation);
+    in.pod(boundary_work);
+    std::vector<double> states;
+    in.vector(states);
+    AssertThrow(states.size() == 2 * prescribed.size(),
+                ExcMessage("The checkpoint does not fit this run (prescribed DoFs differ)."));
+    for (unsigned int i = 0; i < prescribed.size(); ++i)
+      {
+        prescribed[i].u_prev = states[2 * i];
+        prescribed[i].v_prev = states[2 * i + 1];
+      }
+    distribute(u);
+    distribute(v);
+  }
+
+
+
   std::vector<CellStress>
   ExplicitSolver::cell_stresses() const
   {

@@ -20,6 +20,7 @@ namespace
   print_usage(std::ostream &out)
   {
     out << "Usage: wheelrail CASE.prm          run the case\n"
+           "       wheelrail CASE.prm --resume continue from the case's last checkpoint\n"
            "       mpirun -np N wheelrail CASE.prm\n"
            "       wheelrail --help             this text and every parameter with its\n"
            "                                    unit, default and allowed range\n";
@@ -66,13 +67,16 @@ main(int argc, char **argv)
             }
           return 0;
         }
-      if (argc != 2)
+      const bool resume = argc == 3 && std::string(argv[2]) == "--resume";
+      if (argc != 2 && !resume)
         {
           if (rank == 0)
             print_usage(std::cerr);
           return 1;
         }
       parameters.parse(prm, arg);
+      if (resume)
+        parameters.output.resume = true;
       WheelRail::Simulator simulator(parameters, prm, comm);
       simulator.run();
     }

@@ -873,6 +873,31 @@ namespace WheelRail
                       "balance error exceeds this [-], range [1e-12, 1e6] "
                       "(an exploding energy; NaN or infinite energies always "
                       "stop it). Checked at statistics steps.");
+    prm.declare_entry("Checkpoint interval",
+                      "0",
+                      Patterns::Integer(0, 1000000000),
+                      "Steps between checkpoints of an explicit run [-], range "
+                      "[0, 1e9]; 0 = none. A checkpoint (OUTDIR/checkpoint/, "
+                      "one file per rank) holds all vectors, the contact and "
+                      "friction state, axle and suspension, statistics and "
+                      "probes; 'wheelrail CASE.prm --resume' continues from "
+                      "it with the same rank count.");
+    prm.declare_entry("Checkpoint minutes",
+                      "0",
+                      Patterns::Double(0, 1e6),
+                      "Wall-clock minutes between checkpoints [min], range "
+                      "[0, 1e6]; 0 = none.");
+    prm.declare_entry("Stop after step",
+                      "0",
+                      Patterns::Integer(0, 2000000000),
+                      "Stop the explicit run after this step with a "
+                      "checkpoint [-], range [0, 2e9]; 0 = run to the end "
+                      "(for splitting a run, and the restart test).");
+    prm.declare_entry("Resume",
+                      "false",
+                      Patterns::Bool(),
+                      "Continue from the checkpoint in the output directory "
+                      "(the same as the command line flag --resume).");
     prm.declare_entry("Timing warm-up steps",
                       "0",
                       Patterns::Integer(0, 1000000000),
@@ -898,6 +923,10 @@ namespace WheelRail
     probe_component     = prm.get_integer("Probe component");
     timing_warmup_steps = prm.get_integer("Timing warm-up steps");
     divergence_limit    = prm.get_double("Divergence limit");
+    checkpoint_interval = prm.get_integer("Checkpoint interval");
+    checkpoint_minutes  = prm.get_double("Checkpoint minutes");
+    stop_after_step     = prm.get_integer("Stop after step");
+    resume              = prm.get_bool("Resume");
     prm.leave_subsection();
   }
 

@@ -5,6 +5,9 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
 #include <wheelrail/geometry.h>
 #include <wheelrail/hertz.h>
 #include <wheelrail/simulator.h>
@@ -1047,6 +1050,180 @@ namespace WheelRail
 
 
 
+  void
+  Simulator::write_checkpoint()
+  {
+    // every rank writes its part into checkpoint.new/, then rank 0 swaps
+    // it for checkpoint/: the previous checkpoint stays until the new one
+    // is complete
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const std::string  fresh  = output_directory + "/checkpoint.new";
+    const std::string  target = output_directory + "/checkpoint";
+    const std::string  old    = output_directory + "/checkpoint.old";
+    if (rank == 0)
+      {
+        std::filesystem::remove_all(fresh);
+        std::filesystem::create_directories(fresh);
+      }
+    MPI_Barrier(mpi_communicator);
+    int ok = 1;
+    {
+      const std::string name = fresh + "/rank_" + std::to_string(rank) + ".bin";
+      std::ofstream     file(name, std::ios::binary);
+      Checkpoint::Writer out(file);
+      out.pod(checkpoint_magic);
+      out.pod(ranks);
+      out.pod(triangulation.n_global_active_cells());
+      out.pod(solver->get_dof_handler().n_dofs());
+      solver->save(out);
+      out.pod(contact != nullptr);
+      if (contact)
+        contact->save(out);
+      out.pod(wheelset != nullptr);
+      if (wheelset)
+        wheelset->save(out);
+      std::ostringstream table;
+      {
+        boost::archive::binary_oarchive archive(table);
+        archive << statistics;
+      }
+      out.string(table.str());
+      out.pod<std::uint64_t>(vtu_records.size());
+      for (const auto &r : vtu_records)
+        {
+          out.pod(r.first);
+          out.string(r.second);
+        }
+      out.pod(vtu_counter);
+      out.pod<std::uint64_t>(probes.size());
+      for (const Probe &probe : probes)
+        out.vector(probe.history);
+      out.pod(previous_patch_centre);
+      out.pod(next_snapshot);
+      out.pod(initial_energies);
+      out.pod(have_initial_energies);
+      out.pod(max_balance_error);
+      out.pod(hourglass_time_integral);
+      out.pod(hourglass_ref_time_integral);
+      out.pod(internal_time_integral);
+      out.pod(max_hourglass_ratio_actual);
+      out.vector(samples);
+      out.pod(friction_violations);
+      out.pod(most_contact_nodes);
+      out.pod(checkpoint_magic);
+      file.flush();
+      ok = file.good() ? 1 : 0;
+    }
+    ok = Utilities::MPI::min(ok, mpi_communicator);
+    AssertThrow(ok,
+                ExcMessage("Cannot write the checkpoint in '" + fresh +
+                           "' (disk full or no permission); the previous checkpoint is kept."));
+    if (rank == 0)
+      {
+        std::ofstream info(fresh + "/info");
+        info << "wheelrail checkpoint: step " << solver->step_number() << ", t = "
+             << solver->time() << " s, " << ranks << " rank(s)\n";
+        info.flush();
+        AssertThrow(info.good(), ExcMessage("Cannot write '" + fresh + "/info'."));
+        info.close();
+        std::filesystem::remove_all(old);
+        if (std::filesystem::exists(target))
+          std::filesystem::rename(target, old);
+        std::filesystem::rename(fresh, target);
+        std::filesystem::remove_all(old);
+      }
+    MPI_Barrier(mpi_communicator);
+    ++checkpoints_written;
+  }
+
+
+
+  void
+  Simulator::read_checkpoint()
+  {
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    // checkpoint.old exists only if a run died between the two renames
+    std::string directory = output_directory + "/checkpoint";
+    if (!std::filesystem::exists(directory + "/info") &&
+        std::filesystem::exists(output_directory + "/checkpoint.old/info"))
+      directory = output_directory + "/checkpoint.old";
+    const std::string name = directory + "/rank_" + std::to_string(rank) + ".bin";
+    std::ifstream     file(name, std::ios::binary);
+    AssertThrow(file.good(),
+                ExcMessage("--resume: no checkpoint '" + name +
+                           "' (Output/Checkpoint interval or minutes write one; the rank count "
+                           "must be the one of the run that wrote it)."));
+    Checkpoint::Reader in(file, name);
+    std::uint64_t      magic = 0;
+    in.pod(magic);
+    AssertThrow(magic == checkpoint_magic, ExcMessage("'" + name + "' is not a wheelrail checkpoint."));
+    unsigned int                 stored_ranks = 0;
+    types::global_cell_index     cells        = 0;
+    types::global_dof_index      dofs         = 0;
+    in.pod(stored_ranks);
+    in.pod(cells);
+    in.pod(dofs);
+    AssertThrow(stored_ranks == ranks && cells == triangulation.n_global_active_cells() &&
+                  dofs == solver->get_dof_handler().n_dofs(),
+                ExcMessage("The checkpoint in '" + directory + "' was written by a run with " +
+                           std::to_string(stored_ranks) + " rank(s), " + std::to_string(cells) +
+                           " cells and " + std::to_string(dofs) + " DoFs; this run has " +
+                           std::to_string(ranks) + ", " +
+                           std::to_string(triangulation.n_global_active_cells()) + " and " +
+                           std::to_string(solver->get_dof_handler().n_dofs()) +
+                           ": resume with the same parameters and rank count."));
+    solver->load(in);
+    bool has = false;
+    in.pod(has);
+    AssertThrow(has == (contact != nullptr), ExcMessage("The checkpoint's contact setting differs."));
+    if (contact)
+      contact->load(in);
+    in.pod(has);
+    AssertThrow(has == (wheelset != nullptr), ExcMessage("The checkpoint's wheelset setting differs."));
+    if (wheelset)
+      wheelset->load(in);
+    std::string table;
+    in.string(table);
+    {
+      std::istringstream              stream(table);
+      boost::archive::binary_iarchive archive(stream);
+      archive >> statistics;
+    }
+    std::uint64_t n = 0;
+    in.pod(n);
+    vtu_records.resize(n);
+    for (auto &r : vtu_records)
+      {
+        in.pod(r.first);
+        in.string(r.second);
+      }
+    in.pod(vtu_counter);
+    in.pod(n);
+    AssertThrow(n == probes.size(), ExcMessage("The checkpoint's probes differ."));
+    for (Probe &probe : probes)
+      in.vector(probe.history);
+    in.pod(previous_patch_centre);
+    in.pod(next_snapshot);
+    in.pod(initial_energies);
+    in.pod(have_initial_energies);
+    in.pod(max_balance_error);
+    in.pod(hourglass_time_integral);
+    in.pod(hourglass_ref_time_integral);
+    in.pod(internal_time_integral);
+    in.pod(max_hourglass_ratio_actual);
+    in.vector(samples);
+    in.pod(friction_violations);
+    in.pod(most_contact_nodes);
+    in.pod(magic);
+    AssertThrow(magic == checkpoint_magic, ExcMessage("The checkpoint '" + name + "' is corrupt."));
+    pcout << "Resumed from " << directory << " at step " << solver->step_number()
+          << ", t = " << fmt(solver->time() * 1e3) << " ms" << std::endl;
+  }
+
+
+
   std::string
   Simulator::divergence_message(const unsigned long n, const Energies &e) const
   {
@@ -1122,7 +1299,10 @@ namespace WheelRail
   void
   Simulator::run_explicit()
   {
-    if (wheelset)
+    const bool resume = parameters.output.resume;
+    if (resume)
+      ; // the state comes from the checkpoint, after the probes are set up
+    else if (wheelset)
       {
         start_wheelset();
         solver->set_rolling_velocity(wheelset->axle_velocity(),
@@ -1132,6 +1312,8 @@ namespace WheelRail
     else
       apply_initial_conditions();
     setup_probe();
+    if (resume)
+      read_checkpoint();
     const double        dt      = solver->time_step();
     const unsigned long n_steps =
       static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9));
@@ -1143,15 +1325,21 @@ namespace WheelRail
             << ", " << fmt(probe.location[2] * 1e3) << ") mm" << std::endl;
 
     Timer timer(mpi_communicator, true);
-    if (!test)
-      write_vtu();
-    record_probe();
+    if (!resume)
+      {
+        if (!test)
+          write_vtu();
+        record_probe();
+      }
+    const unsigned long first_step = solver->step_number();
+    auto last_checkpoint = std::chrono::steady_clock::now();
     // the timed part of the run: the steps after the warm-up
     using Clock                        = std::chrono::steady_clock;
     Clock::time_point timed_start      = Clock::now();
     double            output_seconds   = 0;
-    const unsigned long warmup         = std::min<unsigned long>(op.timing_warmup_steps, n_steps);
-    for (unsigned long n = 0; n < n_steps; ++n)
+    const unsigned long warmup =
+      std::min<unsigned long>(first_step + op.timing_warmup_steps, n_steps);
+    for (unsigned long n = first_step; n < n_steps; ++n)
       {
         if (n == warmup)
           {
@@ -1203,6 +1391,32 @@ namespace WheelRail
         if (!test && op.vtu_interval > 0 && (n + 1) % op.vtu_interval == 0 && n + 1 < n_steps)
           write_vtu();
         output_seconds += std::chrono::duration<double>(Clock::now() - output_start).count();
+
+        // checkpoint every N steps, every M minutes (rank 0's clock
+        // decides), and at a requested stop
+        const bool stop = op.stop_after_step > 0 && n + 1 == op.stop_after_step && n + 1 < n_steps;
+        bool       due  = stop || (op.checkpoint_interval > 0 && (n + 1) % op.checkpoint_interval == 0);
+        if (op.checkpoint_minutes > 0)
+          {
+            const double minutes =
+              std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.;
+            due = due || Utilities::MPI::broadcast(mpi_communicator,
+                                                   minutes >= op.checkpoint_minutes, 0);
+          }
+        if (due && n + 1 < n_steps)
+          {
+            write_statistics();
+            write_probe();
+            write_checkpoint();
+            last_checkpoint = Clock::now();
+          }
+        if (stop)
+          {
+            pcout << "Stopped after step " << n + 1 << " (Output/Stop after step) at t = "
+                  << fmt(solver->time() * 1e3) << " ms; checkpoint in " << output_directory
+                  << "/checkpoint; continue with: wheelrail CASE.prm --resume" << std::endl;
+            return;
+          }
       }
     const double timed_seconds = std::chrono::duration<double>(Clock::now() - timed_start).count();
     write_statistics();

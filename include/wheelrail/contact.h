@@ -24,6 +24,7 @@
 
 #include <deal.II/lac/la_parallel_vector.h>
 
+#include <wheelrail/checkpoint.h>
 #include <wheelrail/friction_law.h>
 #include <wheelrail/parameters.h>
 
@@ -103,6 +104,14 @@ namespace WheelRail
   class PenaltyContact
   {
   public:
+    /** Write the contact and friction state (replicated on every rank)
+     *  and the search state, so that a restart continues exactly. */
+    void
+    save(Checkpoint::Writer &out) const;
+    /** Read what save() wrote, for the same mesh and rank count. */
+    void
+    load(Checkpoint::Reader &in);
+
     PenaltyContact(const ContactParameters & contact,
                    const MaterialParameters &material,
                    MPI_Comm                  comm);

@@ -23,6 +23,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
+#include <wheelrail/checkpoint.h>
 #include <wheelrail/contact.h>
 #include <wheelrail/parameters.h>
 #include <wheelrail/wheelset.h>
@@ -204,6 +205,13 @@ namespace WheelRail
     /** Internal force f_int(u) without damping, condensed and compressed. */
     void
     compute_internal_force(VectorType &force);
+
+    /** Write the state of the time integration (this rank's part). */
+    void
+    save(Checkpoint::Writer &out) const;
+    /** Read what save() wrote, on the same mesh and partition. */
+    void
+    load(Checkpoint::Reader &in);
 
     /** Times of the steps since the last reset_times(). */
     const StepTimes &

@@ -237,6 +237,10 @@ namespace WheelRail
     unsigned int probe_component;
     unsigned int timing_warmup_steps;
     double       divergence_limit; ///< largest relative energy balance error
+    unsigned int checkpoint_interval; ///< steps between checkpoints, 0 = none
+    double       checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
+    unsigned long stop_after_step;    ///< stop (with a checkpoint) after this step, 0 = never
+    bool         resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
 
     static void declare_parameters(ParameterHandler &prm);
     void        parse_parameters(ParameterHandler &prm);

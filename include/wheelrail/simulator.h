@@ -70,6 +70,17 @@ namespace WheelRail
     {
       return parameters.problem.test_mode && parameters.verification.round_off_sensitive;
     }
+    /** Write the whole run state to OUTDIR/checkpoint/ (write, then
+     *  rename: the previous checkpoint stays until the new one is
+     *  complete). */
+    void
+    write_checkpoint();
+    /** Read it back (wheelrail CASE.prm --resume). */
+    void
+    read_checkpoint();
+    static constexpr std::uint64_t checkpoint_magic = 0x77686c7263687031ull; // "whlrchp1"
+    unsigned int                   checkpoints_written = 0;
+
     /** Where and why a run diverged (all ranks call it). */
     std::string
     divergence_message(const unsigned long n, const Energies &e) const;

@@ -9,6 +9,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <wheelrail/checkpoint.h>
 #include <wheelrail/parameters.h>
 
 namespace WheelRail
@@ -53,6 +54,26 @@ namespace WheelRail
      *  (x - x_axle) would make the contact point move at 2V). */
     void
     start_rolling(const Point<dim> &static_axle, const double rolling_radius);
+
+    /** Write and read the axle and suspension state (checkpoints). */
+    void
+    save(Checkpoint::Writer &out) const
+    {
+      out.pod(active);
+      out.pod(displacement);
+      out.pod(velocity);
+      for (const double x : {theta, omega, d_axle_static, d_c, v_c, work, damper_loss, radius})
+        out.pod(x);
+    }
+    void
+    load(Checkpoint::Reader &in)
+    {
+      in.pod(active);
+      in.pod(displacement);
+      in.pod(velocity);
+      for (double *x : {&theta, &omega, &d_axle_static, &d_c, &v_c, &work, &damper_loss, &radius})
+        in.pod(*x);
+    }
 
     /** Torque about +y at time t [N m] (positive drives towards +x). */
     double
