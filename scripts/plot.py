@@ -154,6 +154,27 @@ class Report:
         os.replace(tmp, path)
         self.figures.append((name, caption, fig))
 
+    def write_page(self, title, header):
+        """report.html: @p header (HTML lines), then every figure with its caption."""
+        body = list(header)
+        for name, caption, _ in self.figures:
+            body.append("<h2>%s</h2><img src='%s' style='max-width:100%%'>" % (html.escape(caption), name))
+        page = ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>%s</title></head><body>\n%s\n"
+                "</body></html>\n" % (html.escape(title), "\n".join(body)))
+        path = os.path.join(self.out, "report.html")
+        with open(path + ".tmp", "w") as f:
+            f.write(page)
+        os.replace(path + ".tmp", path)
+        return path
+
+    def exit_with_check(self, problems=()):
+        """Print the figure check (and @p problems found elsewhere); exit 1 if any."""
+        problems = list(problems) + self.check()
+        for p in problems:
+            print("check failed: " + p)
+        print("check: %d figures, %d problems" % (len(self.figures), len(problems)))
+        sys.exit(1 if problems else 0)
+
     def check(self):
         """Every figure exists and every axes shows finite data."""
         problems = []
@@ -417,16 +438,10 @@ def write_html(rep, run, other, prm, names, stats):
     if timing is not None:
         rows.append(("ns per element-step (wall)", "%.4g" % timing["ns_per_element_step"][0]))
         rows.append(("peak memory per rank", "%.4g MB" % timing["peak_memory_mb"][0]))
-    body = ["<h1>wheelrail run report</h1>", "<table border='1' cellpadding='3'>"]
-    body += ["<tr><td>%s</td><td>%s</td></tr>" % (html.escape(k), html.escape(str(v))) for k, v in rows]
-    body.append("</table>")
-    for name, caption, _ in rep.figures:
-        body.append("<h2>%s</h2><img src='%s' style='max-width:100%%'>" % (html.escape(caption), name))
-    page = "<!DOCTYPE html><html><head><meta charset='utf-8'><title>wheelrail report</title></head><body>\n%s\n</body></html>\n" % "\n".join(body)
-    path = os.path.join(rep.out, "report.html")
-    with open(path + ".tmp", "w") as f:
-        f.write(page)
-    os.replace(path + ".tmp", path)
+    header = ["<h1>wheelrail run report</h1>", "<table border='1' cellpadding='3'>"]
+    header += ["<tr><td>%s</td><td>%s</td></tr>" % (html.escape(k), html.escape(str(v))) for k, v in rows]
+    header.append("</table>")
+    rep.write_page("wheelrail report", header)
 
 
 def main():
@@ -447,18 +462,13 @@ def main():
         print("%-30s %s" % (name, caption))
     print("report: %s" % os.path.join(out, "report.html"))
     if args.check:
-        problems = rep.check()
         expected = ["fig03_contact_nodes.png", "fig04_pressure_shear.png", "fig05_07_adhesion_slip.png",
                     "fig08_09_velocity.png", "fig08_09_spectrum.png", "fig10_microslip_axis.png",
                     "fig12_trailing_microslip.png", "histories.png"]
         if args.other:
             expected.append("fig13_force_difference.png")
         made = [n for n, _, _ in rep.figures]
-        problems += ["%s: not made (input missing?)" % n for n in expected if n not in made]
-        for p in problems:
-            print("check failed: " + p)
-        print("check: %d figures, %d problems" % (len(rep.figures), len(problems)))
-        sys.exit(1 if problems else 0)
+        rep.exit_with_check(["%s: not made (input missing?)" % n for n in expected if n not in made])
 
 
 if __name__ == "__main__":

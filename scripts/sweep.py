@@ -167,29 +167,19 @@ def main():
         ax.legend(fontsize=7)
     rep.save(fig, "fig15_shear_axis.png", "Surface shear stress along the axis for all runs (paper Fig. 15)")
 
-    body = ["<h1>wheelrail traction sweep</h1>", "<p>base case: %s</p>" % html.escape(args.base),
-            "<table border='1' cellpadding='3'><tr><th>law</th><th>mu_n</th><th>mean mu_a</th>"
-            "<th>mean F_N [kN]</th><th>mu_a at the end</th></tr>"]
-    body += ["<tr><td>%s</td><td>%g</td><td>%.4f</td><td>%.2f</td><td>%.4f</td></tr>" %
-             (r[0], r[1], r[2], r[3] * 1e-3, r[4]) for r in rows]
-    body.append("</table>")
-    for name, caption, _ in rep.figures:
-        body.append("<h2>%s</h2><img src='%s' style='max-width:100%%'>" % (html.escape(caption), name))
-    page = os.path.join(args.out, "report.html")
-    with open(page + ".tmp", "w") as f:
-        f.write("<!DOCTYPE html><html><head><meta charset='utf-8'><title>wheelrail sweep</title></head>"
-                "<body>\n%s\n</body></html>\n" % "\n".join(body))
-    os.replace(page + ".tmp", page)
+    header = ["<h1>wheelrail traction sweep</h1>", "<p>base case: %s</p>" % html.escape(args.base),
+              "<table border='1' cellpadding='3'><tr><th>law</th><th>mu_n</th><th>mean mu_a</th>"
+              "<th>mean F_N [kN]</th><th>mu_a at the end</th></tr>"]
+    header += ["<tr><td>%s</td><td>%g</td><td>%.4f</td><td>%.2f</td><td>%.4f</td></tr>" %
+               (r[0], r[1], r[2], r[3] * 1e-3, r[4]) for r in rows]
+    header.append("</table>")
+    page = rep.write_page("wheelrail sweep", header)
 
     for r in rows:
         print("%-12s mu_n %-5g mean mu_a %.4f  mean F_N %.2f kN" % (r[0], r[1], r[2], r[3] * 1e-3))
     print("sweep: %s, %s" % (csv, page))
     if args.check:
-        problems = rep.check()
-        for p in problems:
-            print("check failed: " + p)
-        print("check: %d figures, %d problems" % (len(rep.figures), len(problems)))
-        sys.exit(1 if problems else 0)
+        rep.exit_with_check()
 
 
 if __name__ == "__main__":
