@@ -72,6 +72,36 @@ namespace WheelRail
       __builtin_memcpy(p, &x, sizeof(x));
     }
 
+    /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
+     *  of a batch: H from the displacements, L from the velocities. */
+    inline void
+    batch_gradient(const double *__restrict data, const double *__restrict wb, v8d (&G)[3][3])
+    {
+#pragma GCC unroll 3
+      for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+        for (unsigned int j = 0; j < 3; ++j)
+          G[i][j] = v8d{};
+#pragma GCC unroll 8
+      for (unsigned int a = 0; a < 8; ++a)
+        {
+          v8d b[3];
+#pragma GCC unroll 3
+          for (unsigned int j = 0; j < 3; ++j)
+            b[j] = load(data + (Field::b + a * 3 + j) * W);
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+            {
+              const v8d wa = load(wb + (a * 3 + i) * W);
+#pragma GCC unroll 3
+              for (unsigned int j = 0; j < 3; ++j)
+                G[i][j] += wa * b[j];
+            }
+        }
+    }
+
+
+
     /**
      * Element forces of one batch of W cells: one-point total-Lagrangian
      * St. Venant-Kirchhoff stress, element stiffness damping and FB
@@ -94,23 +124,8 @@ namespace WheelRail
       const v8d mu = v8d{} + mu_;
       const v8d ka = load(data + Field::kappa * W);
 
-      v8d H[3][3] = {};
-#pragma GCC unroll 8
-      for (unsigned int a = 0; a < 8; ++a)
-        {
-          v8d b[3];
-#pragma GCC unroll 3
-          for (unsigned int j = 0; j < 3; ++j)
-            b[j] = load(data + (Field::b + a * 3 + j) * W);
-#pragma GCC unroll 3
-          for (unsigned int i = 0; i < 3; ++i)
-            {
-              const v8d ua = load(ub + (a * 3 + i) * W);
-#pragma GCC unroll 3
-              for (unsigned int j = 0; j < 3; ++j)
-                H[i][j] += ua * b[j];
-            }
-        }
+      v8d H[3][3];
+      batch_gradient(data, ub, H);
 
       v8d E[3][3];
 #pragma GCC unroll 3
@@ -136,23 +151,8 @@ namespace WheelRail
       if constexpr (with_damping)
         {
           const v8d beta    = load(data + Field::beta * W);
-          v8d       L[3][3] = {};
-#pragma GCC unroll 8
-          for (unsigned int a = 0; a < 8; ++a)
-            {
-              v8d b[3];
-#pragma GCC unroll 3
-              for (unsigned int j = 0; j < 3; ++j)
-                b[j] = load(data + (Field::b + a * 3 + j) * W);
-#pragma GCC unroll 3
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  const v8d va = load(vb + (a * 3 + i) * W);
-#pragma GCC unroll 3
-                  for (unsigned int j = 0; j < 3; ++j)
-                    L[i][j] += va * b[j];
-                }
-            }
+          v8d       L[3][3];
+          batch_gradient(data, vb, L);
           // F = I + H
           v8d Fd[3][3];
 #pragma GCC unroll 3
