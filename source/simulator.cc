@@ -1134,7 +1134,6 @@ namespace WheelRail
         std::filesystem::remove_all(old);
       }
     MPI_Barrier(mpi_communicator);
-    ++checkpoints_written;
   }
 
 
@@ -1300,17 +1299,20 @@ namespace WheelRail
   Simulator::run_explicit()
   {
     const bool resume = parameters.output.resume;
-    if (resume)
-      ; // the state comes from the checkpoint, after the probes are set up
-    else if (wheelset)
+    // a resumed run takes its state from the checkpoint, read once the
+    // probes are set up
+    if (!resume)
       {
-        start_wheelset();
-        solver->set_rolling_velocity(wheelset->axle_velocity(),
-                                     Geometry::wheel_centre(parameters.geometry),
-                                     wheelset->angular_velocity());
+        if (wheelset)
+          {
+            start_wheelset();
+            solver->set_rolling_velocity(wheelset->axle_velocity(),
+                                         Geometry::wheel_centre(parameters.geometry),
+                                         wheelset->angular_velocity());
+          }
+        else
+          apply_initial_conditions();
       }
-    else
-      apply_initial_conditions();
     setup_probe();
     if (resume)
       read_checkpoint();

@@ -79,7 +79,6 @@ namespace WheelRail
     void
     read_checkpoint();
     static constexpr std::uint64_t checkpoint_magic = 0x77686c7263687031ull; // "whlrchp1"
-    unsigned int                   checkpoints_written = 0;
 
     /** Where and why a run diverged (all ranks call it). */
     std::string
