@@ -57,15 +57,31 @@ namespace WheelRail
                Tensor<1, dim> &deta,
                double          N[4]) const
       {
-        N[0] = 0.25 * (1 - xi) * (1 - eta);
-        N[1] = 0.25 * (1 + xi) * (1 - eta);
-        N[2] = 0.25 * (1 - xi) * (1 + eta);
-        N[3] = 0.25 * (1 + xi) * (1 + eta);
-        x    = Point<dim>();
+        shape(xi, eta, N);
+        x = Point<dim>();
         for (unsigned int j = 0; j < 4; ++j)
           x += N[j] * (*p[j]);
         dxi  = 0.25 * ((1 - eta) * (*p[1] - *p[0]) + (1 + eta) * (*p[3] - *p[2]));
         deta = 0.25 * ((1 - xi) * (*p[2] - *p[0]) + (1 + xi) * (*p[3] - *p[1]));
+      }
+
+      /** The tangents x_xi, x_eta at corner v, as evaluate() gives them
+       *  there (bit for bit: the other edge's weight is exactly 0). */
+      void
+      corner_tangents(const unsigned int v, Tensor<1, dim> &dxi, Tensor<1, dim> &deta) const
+      {
+        dxi  = (v & 2) ? 0.5 * (*p[3] - *p[2]) : 0.5 * (*p[1] - *p[0]);
+        deta = (v & 1) ? 0.5 * (*p[3] - *p[1]) : 0.5 * (*p[2] - *p[0]);
+      }
+
+      /** Shape functions at (xi, eta), as evaluate() gives them. */
+      static void
+      shape(const double xi, const double eta, double N[4])
+      {
+        N[0] = 0.25 * (1 - xi) * (1 - eta);
+        N[1] = 0.25 * (1 + xi) * (1 - eta);
+        N[2] = 0.25 * (1 - xi) * (1 + eta);
+        N[3] = 0.25 * (1 + xi) * (1 + eta);
       }
 
       /**
@@ -118,6 +134,7 @@ namespace WheelRail
         Point<dim>     x;
         Tensor<1, dim> dxi, deta;
         double         N[4];
+        bool           was_clamped = false;
         for (unsigned int it = 0; it < 20; ++it)
           {
             evaluate(xi, eta, x, dxi, deta, N);
@@ -129,10 +146,18 @@ namespace WheelRail
               break;
             const double dx = -(a22 * b1 - a12 * b2) / det;
             const double de = -(a11 * b2 - a12 * b1) / det;
-            xi              = std::clamp(xi + dx, -3., 3.);
-            eta             = std::clamp(eta + de, -3., 3.);
+            const bool clamped = std::abs(xi + dx) > 3. || std::abs(eta + de) > 3.;
+            xi                 = std::clamp(xi + dx, -3., 3.);
+            eta                = std::clamp(eta + de, -3., 3.);
             if (std::abs(dx) + std::abs(de) < 1e-13)
               break;
+            // the closest point lies far outside the face (beyond the
+            // clamp twice in a row): the callers only use projections
+            // within 1.1, and iterating on (the clamp stops Newton from
+            // converging) would take all 20 iterations
+            if (clamped && was_clamped)
+              break;
+            was_clamped = clamped;
           }
       }
     };
@@ -552,10 +577,8 @@ namespace WheelRail
                                 &node_x[face.node[2]], &node_x[face.node[3]]}};
           for (unsigned int v = 0; v < 4; ++v)
             {
-              Point<dim>     x;
               Tensor<1, dim> dxi, deta;
-              double         N[4];
-              bf.evaluate((v & 1) ? 1. : -1., (v & 2) ? 1. : -1., x, dxi, deta, N);
+              bf.corner_tangents(v, dxi, deta);
               node_normal[face.node[v]] += face.sign * cross_product_3d(dxi, deta);
             }
         }
@@ -563,10 +586,19 @@ namespace WheelRail
       if (n.norm() > 0)
         n /= n.norm();
 
+    // each rank every n_ranks-th candidate (neighbouring slaves cost alike,
+    // so this balances), then all states everywhere
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    for (Pass &pass : passes)
+      {
+        compute_slaves(pass, dt, advance);
+        if (n_ranks > 1)
+          exchange_states(pass);
+      }
     pairs.clear();
     totals = ContactSummary();
-    for (Pass &pass : passes)
-      compute_pass(pass, dt, advance);
+    for (const Pass &pass : passes)
+      accumulate(pass, advance);
     if (totals.n_contact > 0)
       totals.relative_displacement /= totals.n_contact;
 
@@ -604,16 +636,20 @@ namespace WheelRail
 
 
   void
-  PenaltyContact::compute_pass(Pass &pass, const double dt, const bool advance)
+  PenaltyContact::compute_slaves(Pass &pass, const double dt, const bool advance)
   {
-    const double margin = prm.search_margin;
-    for (unsigned int c = 0; c < pass.candidate_slaves.size(); ++c)
+    const double       margin  = prm.search_margin;
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
+    for (unsigned int c = rank; c < pass.candidate_slaves.size(); c += n_ranks)
       {
         const unsigned int s     = pass.candidate_slaves[c];
         ContactNodeState & state = pass.slaves[s];
         const Point<dim> & xs    = node_x[pass.slave_node[s]];
         state.x                  = xs;
         const Point<dim> x_prev  = state.x_previous;
+        state.friction_loss      = 0;
+        state.damping_work       = 0;
         if (advance)
           state.x_previous = xs;
 
@@ -622,7 +658,6 @@ namespace WheelRail
         int            best_face = -1;
         double         best_xi = 0, best_eta = 0, best_gap = 0, best_out = 1e300;
         Tensor<1, dim> best_n;
-        double         best_N[4] = {0, 0, 0, 0};
         for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
           {
             const MasterFace &face = pass.faces[pass.face_lists[k]];
@@ -657,8 +692,6 @@ namespace WheelRail
                 best_gap  = gap;
                 best_out  = o;
                 best_n    = n;
-                for (unsigned int j = 0; j < 4; ++j)
-                  best_N[j] = N[j];
               }
           }
 
@@ -688,10 +721,8 @@ namespace WheelRail
             const double rate = (best_gap - state.gap_previous) / dt;
             const double fd   = std::max(-c * rate, -state.normal_force);
             state.normal_force += fd;
-            damping_loss += -fd * rate * dt;
+            state.damping_work = -fd * rate * dt;
           }
-        totals.max_penetration = std::max(totals.max_penetration, -best_gap);
-        totals.elastic_energy += 0.5 * k * best_gap * best_gap;
 
         if (law && advance)
           {
@@ -735,11 +766,8 @@ namespace WheelRail
             trial -= (trial * best_n) * best_n;
             state.slip_velocity  = de.norm() / dt;
             state.cof            = law->coefficient(state.slip_velocity);
-            double lost            = 0;
             state.tangential_force = return_map(trial, state.cof * state.normal_force, kt,
-                                                state.slipping, lost);
-            dissipation += lost;
-            totals.elastic_energy += 0.5 * state.tangential_force.norm_square() / kt;
+                                                state.slipping, state.friction_loss);
           }
         else
           {
@@ -753,20 +781,74 @@ namespace WheelRail
         state.xi           = best_xi;
         state.eta          = best_eta;
         state.gap_previous = best_gap;
+      }
+  }
 
-        const Tensor<1, dim> F = state.normal_force * best_n + state.tangential_force;
+
+
+  void
+  PenaltyContact::exchange_states(Pass &pass)
+  {
+    // rank r computed the candidates r, r + n_ranks, ...: packed per rank
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int n       = pass.candidate_slaves.size();
+    const int          size    = sizeof(ContactNodeState);
+    std::vector<int>   counts(n_ranks), displs(n_ranks);
+    unsigned int       offset = 0;
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        const unsigned int count = r < n ? (n - r + n_ranks - 1) / n_ranks : 0;
+        counts[r]                = count * size;
+        displs[r]                = offset * size;
+        offset += count;
+      }
+    exchange_buffer.resize(n);
+    for (unsigned int c = rank, i = displs[rank] / size; c < n; c += n_ranks, ++i)
+      exchange_buffer[i] = pass.slaves[pass.candidate_slaves[c]];
+    const int ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_buffer.data(),
+                                    counts.data(), displs.data(), MPI_BYTE, mpi_communicator);
+    AssertThrowMPI(ierr);
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      for (unsigned int c = r, i = displs[r] / size; c < n; c += n_ranks, ++i)
+        pass.slaves[pass.candidate_slaves[c]] = exchange_buffer[i];
+  }
+
+
+
+  void
+  PenaltyContact::accumulate(const Pass &pass, const bool advance)
+  {
+    for (const unsigned int s : pass.candidate_slaves)
+      {
+        const ContactNodeState &state = pass.slaves[s];
+        damping_loss += state.damping_work;
+        dissipation += state.friction_loss;
+        if (!state.in_contact)
+          continue;
+        const MasterFace &face = pass.faces[state.face];
+        const double      k    = face.stiffness;
+        totals.max_penetration = std::max(totals.max_penetration, -state.gap);
+        totals.elastic_energy += 0.5 * k * state.gap * state.gap;
+        if (law && advance)
+          totals.elastic_energy +=
+            0.5 * state.tangential_force.norm_square() / (prm.tangential_factor * k);
+
+        const Tensor<1, dim> F = state.normal_force * state.normal + state.tangential_force;
         // the force on the first pass's slave body: in the second pass the
         // slaves belong to the other body
         totals.force += (&pass == &passes.front()) ? F : -F;
         ++totals.n_contact;
+        double N[4];
+        BilinearFace::shape(state.xi, state.eta, N);
         {
           Point<dim> X_c, x_c;
           for (unsigned int j = 0; j < 4; ++j)
             {
-              X_c += best_N[j] * node_X[face.node[j]];
-              x_c += best_N[j] * node_x[face.node[j]];
+              X_c += N[j] * node_X[face.node[j]];
+              x_c += N[j] * node_x[face.node[j]];
             }
-          totals.relative_displacement += (xs - state.X) - (x_c - X_c);
+          totals.relative_displacement += (state.x - state.X) - (x_c - X_c);
         }
         if (state.slipping)
           ++totals.n_slip;
@@ -778,9 +860,9 @@ namespace WheelRail
         for (unsigned int v = 0; v < 4; ++v)
           {
             pair.master[v] = node_dof[face.node[v]];
-            pair.shape[v]  = best_N[v];
+            pair.shape[v]  = N[v];
           }
-        pair.normal    = best_n;
+        pair.normal    = state.normal;
         pair.stiffness = k;
         pairs.push_back(pair);
       }

@@ -1444,7 +1444,9 @@ namespace WheelRail
         if (contact)
           pcout << "  contact: " << contact->n_searches() << " candidate searches, "
                 << fmt(contact->search_seconds() / std::max(1u, contact->n_searches()) * 1e3, 3)
-                << " ms per search" << std::endl;
+                << " ms per search; at the last search " << contact->n_candidates().first
+                << " candidate slaves, " << contact->n_candidates().second
+                << " slave-face pairs" << std::endl;
         pcout
               << "  results in " << output_directory
               << "/ (solution.pvd, statistics, probe.csv, parameters.prm)" << std::endl;

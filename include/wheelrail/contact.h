@@ -3,15 +3,17 @@
  * Penalty node-to-segment contact with friction (SPEC 4): slave nodes on one
  * boundary against the bilinear faces of another, LS-DYNA style.
  *
- * Parallel design: the contact computation is replicated. Every rank knows
- * the list of all slave nodes and master faces (small: surfaces only). At a
- * search, the current positions of all contact nodes are gathered and the
- * candidate slaves and faces (within the search margin) are chosen; at every
- * step only the candidates' positions are gathered (one allgatherv), and
- * every rank computes all contact forces in the same order. Each rank then
- * adds the forces of the DoFs it owns. Results are therefore independent of
- * the number of ranks, and a slave node and its master face may live on any
- * ranks.
+ * Parallel design: the contact state is replicated, its computation is
+ * shared. Every rank knows the list of all slave nodes and master faces
+ * (small: surfaces only). At a search, the current positions of all contact
+ * nodes are gathered and the candidate slaves and faces (within the search
+ * margin) are chosen; at every step only the candidates' positions are
+ * gathered (one allgatherv). Each rank then computes the closest point,
+ * penalty force and friction return map of every n_ranks-th candidate
+ * slave, these states are exchanged (one allgatherv), and
+ * every rank sums the totals and adds the forces on the DoFs it owns, in the
+ * same slave order. Results are therefore independent of the number of
+ * ranks, and a slave node and its master face may live on any ranks.
  */
 #ifndef wheelrail_contact_h
 #define wheelrail_contact_h
@@ -53,6 +55,10 @@ namespace WheelRail
     double     mass = 0;   ///< lumped nodal mass (contact damping) [kg]
     Point<dim> x_previous; ///< position at the previous step
     double     gap_previous = 0;
+    /** Energy dissipated at this node in the last step by friction and by
+     *  contact damping [J] (summed in slave order into the totals). */
+    double friction_loss = 0;
+    double damping_work  = 0;
 
     double
     pressure() const
@@ -186,6 +192,19 @@ namespace WheelRail
     {
       return searches;
     }
+    /** Candidate slaves and candidate slave-face pairs of the last search
+     *  (all passes). */
+    std::pair<unsigned int, unsigned int>
+    n_candidates() const
+    {
+      std::pair<unsigned int, unsigned int> n(0, 0);
+      for (const Pass &pass : passes)
+        {
+          n.first += pass.candidate_slaves.size();
+          n.second += pass.face_lists.size();
+        }
+      return n;
+    }
     /** Wall seconds spent in searches (candidate rebuilds) so far. */
     double
     search_seconds() const
@@ -228,8 +247,16 @@ namespace WheelRail
     void
     gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
                      const std::vector<unsigned int> &                 nodes);
+    /** Closest point, penalty force and friction of this rank's share of
+     *  the candidate slaves of @p pass (every n_ranks-th): their states only. */
     void
-    compute_pass(Pass &pass, const double dt, const bool advance);
+    compute_slaves(Pass &pass, const double dt, const bool advance);
+    /** Every rank computed its share of the candidates: gather all. */
+    void
+    exchange_states(Pass &pass);
+    /** Totals, dissipation and active pairs from the states, in slave order. */
+    void
+    accumulate(const Pass &pass, const bool advance);
 
     const ContactParameters &prm;
     MPI_Comm                 mpi_communicator;
@@ -250,6 +277,7 @@ namespace WheelRail
     std::vector<unsigned int>            owned_active;  ///< this rank's part
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
 
+    std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
     std::vector<Pass>        passes;
     std::vector<ContactPair> pairs;
     ContactSummary           totals;
