@@ -351,11 +351,17 @@ def plot_run(run, other, out):
         ts = column(names, stats, "trailing micro-slip")
         if ts is not None:
             fig, ax = plt.subplots(figsize=(7, 4.2))
-            ax.plot(xw, ts, lw=0.6, c="0.6", label="raw")
+            ax.plot(xw, ts, lw=0.6, c="0.6", label="s_n = |de|/dt, raw")
             n = max(3, len(ts) // 25)
-            ax.plot(xw, smooth(ts, n), c="tab:red", label="moving mean over %d rows" % n)
+            ax.plot(xw, smooth(ts, n), c="tab:red", label="s_n, moving mean over %d rows" % n)
+            # the signed mean relative velocity (creep): oscillations cancel
+            sx = column(names, stats, "trailing slip rate x")
+            if sx is not None:
+                ax.plot(xw, smooth(sx, n), c="tab:blue",
+                        label="x component of the mean de/dt (creep), moving mean")
+                ax.axhline(0, c="k", lw=0.5)
             ax.set_xlabel("wheel position x_w [mm]")
-            ax.set_ylabel("mean trailing micro-slip [m/s]")
+            ax.set_ylabel("trailing part: mean micro-slip [m/s]")
             ax.legend(fontsize=8)
             rep.save(fig, "fig12_trailing_microslip.png",
                      "Mean micro-slip of the trailing part of the patch against wheel position (paper Fig. 12)")

@@ -702,6 +702,7 @@ namespace WheelRail
             state.normal_force     = 0;
             state.tangential_force = Tensor<1, dim>();
             state.slip_velocity    = 0;
+            state.slip_rate        = Tensor<1, dim>();
             state.slipping         = false;
             if (advance)
               state.face = -1;
@@ -764,6 +765,7 @@ namespace WheelRail
               }
             Tensor<1, dim> trial = Ft_old - kt * de;
             trial -= (trial * best_n) * best_n;
+            state.slip_rate      = de / dt;
             state.slip_velocity  = de.norm() / dt;
             state.cof            = law->coefficient(state.slip_velocity);
             state.tangential_force = return_map(trial, state.cof * state.normal_force, kt,
@@ -774,6 +776,7 @@ namespace WheelRail
             // frictionless, or a static evaluation (no time step to slip in)
             state.tangential_force = Tensor<1, dim>();
             state.slip_velocity    = 0;
+            state.slip_rate        = Tensor<1, dim>();
             state.cof              = law ? law->coefficient(0.) : 0.;
             state.slipping         = false;
           }

@@ -963,7 +963,8 @@ namespace WheelRail
       "F_L / F_N over the second half of the run against min(mu_n, f), f the "
       "Coulomb coefficient or f_D of the exponential law; 'free rolling' (rigid "
       "axle, no torque): the mean F_N over the second half against the static "
-      "load, and the mean F_L / F_N and trailing micro-slip near zero.");
+      "load, and the mean F_L / F_N and the mean longitudinal creepage of the "
+      "trailing part near zero.");
     prm.declare_entry("Displacement gradient",
                       "1e-3, 2e-4, -3e-4, 5e-4, -1e-3, 2e-4, 1e-4, 3e-4, 2e-3",
                       Patterns::List(Patterns::Double(-1, 1), 9, 9, ","),

@@ -558,21 +558,27 @@ namespace WheelRail
 
 
 
-  double
+  Simulator::TrailingSlip
   Simulator::trailing_micro_slip() const
   {
+    TrailingSlip result;
     const double centre = patch_centre();
     if (std::isnan(centre))
-      return 0;
-    double       sum = 0;
-    unsigned int n   = 0;
+      return result;
+    unsigned int n = 0;
     for (const auto &s : contact->slave_states())
       if (s.in_contact && s.x[0] < centre)
         {
-          sum += s.slip_velocity;
+          result.magnitude += s.slip_velocity;
+          result.rate += s.slip_rate;
           ++n;
         }
-    return n > 0 ? sum / n : 0.;
+    if (n > 0)
+      {
+        result.magnitude /= n;
+        result.rate /= n;
+      }
+    return result;
   }
 
 
@@ -822,7 +828,10 @@ namespace WheelRail
         statistics.add_value("contact nodes", cs.n_contact);
         statistics.add_value("slip nodes", cs.n_slip);
         add("max penetration [m]", cs.max_penetration);
-        add("trailing micro-slip [m/s]", trailing_micro_slip());
+        const TrailingSlip trailing = trailing_micro_slip();
+        add("trailing micro-slip [m/s]", trailing.magnitude);
+        add("trailing slip rate x [m/s]", trailing.rate[0]);
+        add("trailing slip rate y [m/s]", trailing.rate[1]);
       }
     add("kinetic [J]", e.kinetic);
     add("internal [J]", e.internal);
@@ -873,7 +882,9 @@ namespace WheelRail
           ffn += n.cof * n.normal_force;
         }
     s.mean_cof      = fn > 0 ? ffn / fn : 0.;
-    s.trailing_slip = trailing_micro_slip();
+    const TrailingSlip trailing = trailing_micro_slip();
+    s.trailing_slip             = trailing.magnitude;
+    s.trailing_slip_rate        = trailing.rate;
     samples.push_back(s);
   }
 
@@ -1478,7 +1489,7 @@ namespace WheelRail
                   << " mm (node extent), " << cs.n_contact << " nodes, peak pressure "
                   << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
                   << " MPa, slip fraction " << fmt(cs.n_contact ? double(cs.n_slip) / cs.n_contact : 0., 3)
-                  << ", trailing micro-slip " << fmt(trailing_micro_slip(), 4) << " m/s" << std::endl;
+                  << ", trailing micro-slip " << fmt(trailing_micro_slip().magnitude, 4) << " m/s" << std::endl;
           }
       }
     final_checks();
@@ -1703,23 +1714,34 @@ namespace WheelRail
         // means over the second half, after the start transient
         const unsigned int first = samples.size() / 2;
         double             fn = 0, fl = 0, slip = 0;
+        Tensor<1, dim>     rate;
         for (unsigned int i = first; i < samples.size(); ++i)
           {
             fn += samples[i].contact_force[2] / (samples.size() - first);
             fl += samples[i].contact_force[0] / (samples.size() - first);
             slip += samples[i].trailing_slip / (samples.size() - first);
+            rate += samples[i].trailing_slip_rate / double(samples.size() - first);
           }
         result("F_N settles to the static load (mean over the second half)",
                fn,
                wheelset->static_load(),
                "kN",
                1e-3);
-        // the trailing micro-slip is reported, not checked: on the centre
-        // line of the patch it oscillates laterally at up to 1-2 m/s
-        // (under investigation), far above the slip-free value
+        // The micro-slip: the mean relative velocity de/dt of the trailing
+        // part, longitudinal, as a creepage s_x / V: zero without traction
+        // (with mu_n = 0.3 it is -4e-3, wheelset_traction_01). Its magnitude
+        // s_n = |de| / dt is only reported: a lateral oscillation of the
+        // contact nodes near 1 MHz (a mesh mode of the penalty stick
+        // springs, README "Micro-slip oscillations") keeps it at 0.2 m/s
+        // while its mean vector stays near zero.
+        const double creepage = rate[0] / parameters.wheelset.rolling_speed;
         pcout << "  mean F_L / F_N " << fmt(fl / fn, 2) << " (limit 0.005), within: "
               << (std::abs(fl / fn) <= 0.005 ? "yes" : "no") << std::endl
-              << "  mean trailing micro-slip " << fmt(slip, 2) << " m/s (reported)" << std::endl;
+              << "  mean trailing longitudinal micro-slip s_x / V " << fmt(creepage, 2)
+              << " (limit 1e-4), within: " << (std::abs(creepage) <= 1e-4 ? "yes" : "no")
+              << std::endl
+              << "  mean trailing micro-slip magnitude s_n " << fmt(slip, 2) << " m/s (reported)"
+              << std::endl;
       }
     else if (vp.check == "static start" || vp.check == "traction")
       {

@@ -47,6 +47,9 @@ namespace WheelRail
     double         normal_force = 0;   ///< |F_n| [N]
     Tensor<1, dim> tangential_force;   ///< F_t on the slave [N]
     double         slip_velocity = 0;  ///< micro-slip s_n = |de| / dt [m/s]
+    /** de / dt: the slave's velocity relative to the master material under
+     *  it (elastic spring rate plus slip) [m/s]; |slip_rate| = s_n. */
+    Tensor<1, dim> slip_rate;
     double         cof           = 0;  ///< local coefficient of friction
     bool           slipping      = false; ///< the return map was active
     /** Friction memory: master face and face coordinates of the contact point. */

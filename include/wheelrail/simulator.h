@@ -147,8 +147,13 @@ namespace WheelRail
     /** Force-weighted mean x of the contact nodes (NaN without contact). */
     double
     patch_centre() const;
-    /** Mean micro-slip of the contact nodes behind the patch centre. */
-    double
+    /** Means over the contact nodes behind the patch centre. */
+    struct TrailingSlip
+    {
+      double         magnitude = 0; ///< of the micro-slip s_n = |de| / dt [m/s]
+      Tensor<1, dim> rate;          ///< of the relative velocity de / dt [m/s]
+    };
+    TrailingSlip
     trailing_micro_slip() const;
 
     Energies     initial_energies;
@@ -170,6 +175,7 @@ namespace WheelRail
       double         tangential_stiffness; ///< sum of k_t over the contact pairs
       double         mean_cof;             ///< sum f |F_n| / sum |F_n| over the contact nodes
       double         trailing_slip;        ///< mean micro-slip behind the patch centre
+      Tensor<1, dim> trailing_slip_rate;   ///< mean relative velocity vector there
     };
     std::vector<Sample> samples;
     unsigned long       friction_violations = 0;
