@@ -236,7 +236,8 @@ namespace WheelRail
                     }
                   const Tensor<1, dim> n = cross_product_3d(face->vertex(1) - face->vertex(0),
                                                             face->vertex(2) - face->vertex(0));
-                  faces.push_back(prm.penalty_scale * bulk_modulus * area * area / cell->measure());
+                  faces.push_back(area);
+                  faces.push_back(cell->measure());
                   faces.push_back(n * (face->center() - cell->center()) > 0 ? 1. : -1.);
                 }
             }
@@ -268,14 +269,25 @@ namespace WheelRail
 
     // faces, ordered by centroid
     std::vector<std::pair<Point<dim>, std::vector<double>>> sorted_faces;
+    double thinnest = std::numeric_limits<double>::max(); // smallest V / A
     for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, faces))
-      for (unsigned int i = 0; i < part.size(); i += 18)
+      for (unsigned int i = 0; i < part.size(); i += 19)
         {
           Point<dim> c;
           for (unsigned int v = 0; v < 4; ++v)
             c += 0.25 * Point<dim>(part[i + 4 * v + 1], part[i + 4 * v + 2], part[i + 4 * v + 3]);
-          sorted_faces.emplace_back(c, std::vector<double>(part.begin() + i, part.begin() + i + 18));
+          sorted_faces.emplace_back(c, std::vector<double>(part.begin() + i, part.begin() + i + 19));
+          thinnest = std::min(thinnest, part[i + 17] / part[i + 16]);
         }
+    // penalty stiffness per face (SPEC 4; Contact/Penalty stiffness)
+    if (prm.penalty_stiffness == "area" && &pass == &passes.front())
+      reference_length =
+        prm.penalty_reference_length > 0 ? prm.penalty_reference_length : thinnest;
+    const auto stiffness = [&](const double area, const double volume) {
+      return prm.penalty_stiffness == "area" ?
+               prm.penalty_scale * bulk_modulus * area / reference_length :
+               prm.penalty_scale * bulk_modulus * area * area / volume;
+    };
     std::sort(sorted_faces.begin(), sorted_faces.end(), [](const auto &a, const auto &b) {
       return lexicographic_less(a.first, b.first);
     });
@@ -285,8 +297,8 @@ namespace WheelRail
         for (unsigned int v = 0; v < 4; ++v)
           face.node[v] = node_index(static_cast<types::global_dof_index>(f.second[4 * v]),
                                     Point<dim>(f.second[4 * v + 1], f.second[4 * v + 2], f.second[4 * v + 3]));
-        face.stiffness = f.second[16];
-        face.sign      = f.second[17];
+        face.stiffness = stiffness(f.second[16], f.second[17]);
+        face.sign      = f.second[18];
         pass.faces.push_back(face);
         if (&pass == &passes.front())
           {

@@ -162,8 +162,6 @@ namespace WheelRail
         const bool   has_zone = p.zone_length > 0;
         if (material == MaterialIds::rail)
           {
-            if (!has_zone)
-              return coarse;
             const double top =
               std::sqrt(p.rail_profile_radius * p.rail_profile_radius -
                         c[1] * c[1]) -
@@ -177,7 +175,16 @@ namespace WheelRail
                                           p.zone_half_width,
                                           0,
                                           p.zone_depth);
-            return std::min(coarse, p.h_min + g * d);
+            double h = has_zone ? std::min(coarse, p.h_min + g * d) : coarse;
+            if (p.path_cell_size > 0)
+              {
+                const double dp = box_distance(c[0], c[1], top - c[2],
+                                               p.rail_start_x, p.rail_end_x,
+                                               -p.zone_half_width, p.zone_half_width,
+                                               0, p.zone_depth);
+                h = std::min(h, std::max(p.path_cell_size, p.h_min) + g * dp);
+              }
+            return h;
           }
         if (material == MaterialIds::wheel)
           {
@@ -201,6 +208,18 @@ namespace WheelRail
                                               0,
                                               p.zone_depth);
                 h = std::min(h, p.h_min + g * d);
+              }
+            if (p.path_cell_size > 0)
+              {
+                // the arc that meets the rail: from just before the
+                // initial contact point to the rail's end
+                const double s  = p.wheel_radius * std::atan2(dx, -dz);
+                const double dp = box_distance(s, c[1], depth,
+                                               -p.zone_half_width,
+                                               p.rail_end_x - p.wheel_centre_x,
+                                               -p.zone_half_width, p.zone_half_width,
+                                               0, p.zone_depth);
+                h = std::min(h, std::max(p.path_cell_size, p.h_min) + g * dp);
               }
             return h;
           }

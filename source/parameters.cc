@@ -197,6 +197,18 @@ namespace WheelRail
                         "Growth of the target cell size with the distance d "
                         "from the solution zone, h = h_min + Grading d [-], "
                         "range [0.05, 4].");
+      prm.declare_entry("Rolling path cell size",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "Target cell size along the whole rolling path [m], "
+                        "range [0, 1], 0 = off: the rail top over its length "
+                        "and the wheel tread arc that rolls over it, within "
+                        "the zone's half width and depth, graded outside. "
+                        "The faces of coarse cells cut the curved surfaces "
+                        "(sag L^2 / 8R: 47 um for 10.6 mm faces on the rail "
+                        "profile), so a wheel rolling from coarse into fine "
+                        "cells meets a surface that rises by that much; a "
+                        "path of a few mm keeps the sag at a few um.");
       prm.declare_entry("Refine wheel",
                         "true",
                         Patterns::Bool(),
@@ -295,6 +307,7 @@ namespace WheelRail
       zone_depth       = prm.get_double("Solution zone depth");
       grading          = prm.get_double("Grading");
       refine_wheel     = prm.get_bool("Refine wheel");
+      path_cell_size   = prm.get_double("Rolling path cell size");
       prm.leave_subsection();
 
       prm.enter_subsection("Bar");
@@ -598,6 +611,22 @@ namespace WheelRail
                       "SF in the penalty stiffness k = SF K A^2 / V (K bulk "
                       "modulus, A master face area, V its cell's volume) [-], "
                       "range [1e-6, 100].");
+    prm.declare_entry("Penalty stiffness",
+                      "segment",
+                      Patterns::Selection("segment|area"),
+                      "'segment': k = SF K A^2 / V per master face (LS-DYNA, SPEC "
+                      "4): the stiffness per unit area, SF K A / V, grows as the "
+                      "mesh is refined, so a wheel rolling from coarse into fine "
+                      "faces is pushed up (the paper mesh: F_N from 140 to over "
+                      "400 kN); 'area': k = SF K A / h_ref, the same pressure per "
+                      "penetration SF K / h_ref on every face, equal to "
+                      "'segment' on cubic cells of size h_ref.");
+    prm.declare_entry("Penalty reference length",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "h_ref of Penalty stiffness = area [m], range [0, 1]; 0: "
+                      "the smallest V / A of the master faces' cells (the "
+                      "finest cells, where both choices agree).");
     prm.declare_entry("Tangential stiffness factor",
                       "1",
                       Patterns::Double(1e-6, 100),
@@ -660,6 +689,8 @@ namespace WheelRail
     master_boundary     = prm.get_integer("Master boundary");
     two_pass            = prm.get_bool("Two pass");
     penalty_scale       = prm.get_double("Penalty scale factor");
+    penalty_stiffness   = prm.get("Penalty stiffness");
+    penalty_reference_length = prm.get_double("Penalty reference length");
     tangential_factor   = prm.get_double("Tangential stiffness factor");
     damping_ratio       = prm.get_double("Contact damping");
     search_interval     = prm.get_integer("Search interval");

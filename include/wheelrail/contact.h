@@ -214,6 +214,12 @@ namespace WheelRail
     {
       return search_time;
     }
+    /** h_ref of Contact/Penalty stiffness = area [m] (0 with 'segment'). */
+    double
+    penalty_reference_length() const
+    {
+      return reference_length;
+    }
     const FrictionLaw *
     friction_law() const
     {
@@ -265,6 +271,7 @@ namespace WheelRail
     MPI_Comm                 mpi_communicator;
     std::unique_ptr<FrictionLaw> law;
     double                       bulk_modulus;
+    double                       reference_length = 0; ///< h_ref of the 'area' penalty [m]
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
     // contact nodes: slaves and face corners of all passes (replicated)

@@ -70,6 +70,7 @@ namespace WheelRail
     double zone_depth;
     double grading;
     bool   refine_wheel;
+    double path_cell_size; ///< along the whole rolling path, 0 = off [m]
     // bar (verification geometry)
     double              bar_length;
     double              bar_width;
@@ -171,6 +172,8 @@ namespace WheelRail
     types::boundary_id master_boundary;
     bool               two_pass;
     double             penalty_scale;
+    std::string        penalty_stiffness;        ///< "segment" or "area"
+    double             penalty_reference_length; ///< h_ref of "area" [m], 0: finest master cell
     double             tangential_factor;
     double             damping_ratio;
     unsigned int       search_interval;
