@@ -3,7 +3,8 @@
 #   ./run.sh                    install missing packages, build (Release) into build/,
 #                               run prm/default.prm on 2 MPI ranks
 #   ./run.sh test               same set-up, then the whole test suite (ctest)
-#   ./run.sh CASE.prm [-np N]   same set-up, then run CASE.prm on N ranks (default 2)
+#   ./run.sh CASE.prm [-np N] [--resume]  same set-up, then run CASE.prm on N ranks
+#                               (default 2); --resume continues from its checkpoint
 #   ./run.sh bench [N ...]      same set-up, then the speed benchmark prm/bench_paper.prm
 #                               on 1 and 2 ranks (or the rank counts N given); figures
 #                               appended to bench/results.csv
@@ -48,12 +49,13 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 
 run_case() {
   local prm=$1 np=$2
+  shift 2 # further arguments (--resume) go to wheelrail
   [ -f "$prm" ] || { echo "run.sh: no such parameter file: $prm" >&2; exit 1; }
   echo "run.sh: running $prm on $np MPI rank(s)"
   if [ "$np" -gt 1 ]; then
-    mpirun -np "$np" "$top/build/wheelrail" "$prm"
+    mpirun -np "$np" "$top/build/wheelrail" "$prm" "$@"
   else
-    "$top/build/wheelrail" "$prm"
+    "$top/build/wheelrail" "$prm" "$@"
   fi
   local dir
   dir=$(sed -n 's/^[[:space:]]*set[[:space:]]\+Output directory[[:space:]]*=[[:space:]]*\(.*[^[:space:]]\)[[:space:]]*$/\1/p' "$prm" | tail -1)
@@ -119,17 +121,25 @@ case "$verb" in
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
-    if [ "${2:-}" = "-np" ]; then np=${3:?"-np needs a number"}; fi
+    flags=()
+    shift
+    while [ $# -gt 0 ]; do
+      case $1 in
+        -np) np=${2:?"-np needs a number"}; shift 2 ;;
+        --resume) flags+=(--resume); shift ;;
+        *) echo "run.sh: unknown option '$1' after $verb (known: -np N, --resume)" >&2; exit 1 ;;
+      esac
+    done
     build
-    run_case "$verb" "$np"
+    run_case "$verb" "$np" "${flags[@]}"
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac
