@@ -891,10 +891,6 @@ namespace WheelRail
     out.vector(node_x);
     out.vector(node_x_search);
     out.vector(active_nodes);
-    out.vector(recv_counts);
-    out.vector(recv_displs);
-    out.vector(recv_order);
-    out.vector(owned_active);
     out.pod<std::uint64_t>(passes.size());
     for (const Pass &pass : passes)
       {
@@ -920,10 +916,6 @@ namespace WheelRail
     in.vector(node_x);
     in.vector(node_x_search);
     in.vector(active_nodes);
-    in.vector(recv_counts);
-    in.vector(recv_displs);
-    in.vector(recv_order);
-    in.vector(owned_active);
     std::uint64_t n_passes = 0;
     in.pod(n_passes);
     AssertThrow(n_passes == passes.size(),

@@ -282,9 +282,6 @@ namespace WheelRail
     std::vector<Tensor<1, dim>>          node_normal; ///< averaged master normals
     std::vector<double>                  node_area;   ///< master tributary area (first pass)
     std::vector<unsigned int>            active_nodes;  ///< gathered every step
-    std::vector<int>                     recv_counts, recv_displs;
-    std::vector<unsigned int>            recv_order; ///< node of each received item
-    std::vector<unsigned int>            owned_active;  ///< this rank's part
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
