@@ -193,10 +193,10 @@ namespace WheelRail
             const double     dz     = c[2] - centre[2];
             const double     depth  = p.wheel_radius - std::sqrt(dx * dx + dz * dz);
             double           h      = coarse + g * depth;
+            // arc length from the lowest tread point, positive towards +x
+            const double s = p.wheel_radius * std::atan2(dx, -dz);
             if (has_zone && p.refine_wheel)
               {
-                // arc length from the lowest tread point, positive towards +x
-                const double s  = p.wheel_radius * std::atan2(dx, -dz);
                 const double sO = -p.wheel_centre_x;
                 const double d  = box_distance(s,
                                               c[1],
@@ -213,7 +213,6 @@ namespace WheelRail
               {
                 // the arc that meets the rail: from just before the
                 // initial contact point to the rail's end
-                const double s  = p.wheel_radius * std::atan2(dx, -dz);
                 const double dp = box_distance(s, c[1], depth,
                                                -p.zone_half_width,
                                                p.rail_end_x - p.wheel_centre_x,
