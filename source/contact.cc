@@ -536,26 +536,6 @@ namespace WheelRail
 
 
 
-  std::vector<std::vector<types::global_dof_index>>
-  PenaltyContact::candidate_couplings() const
-  {
-    std::vector<std::vector<types::global_dof_index>> result;
-    for (const Pass &pass : passes)
-      for (unsigned int c = 0; c < pass.candidate_slaves.size(); ++c)
-        {
-          std::vector<types::global_dof_index> dofs = {node_dof[pass.slave_node[pass.candidate_slaves[c]]]};
-          for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
-            for (unsigned int v = 0; v < 4; ++v)
-              dofs.push_back(node_dof[pass.faces[pass.face_lists[k]].node[v]]);
-          std::sort(dofs.begin() + 1, dofs.end());
-          dofs.erase(std::unique(dofs.begin() + 1, dofs.end()), dofs.end());
-          result.push_back(dofs);
-        }
-    return result;
-  }
-
-
-
   void
   PenaltyContact::add_forces(const LinearAlgebra::distributed::Vector<double> &u,
                              const double                                      dt,

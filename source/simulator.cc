@@ -535,7 +535,8 @@ namespace WheelRail
               << " contact nodes, penetration " << fmt(contact->summary().max_penetration * 1e6, 4)
               << " um";
         if (!parameters.problem.test_mode)
-          pcout << " (" << fmt(timer.wall_time(), 3) << " s)";
+          pcout << " (" << r.newton_iterations << " Newton, " << r.linear_iterations
+                << " CG iterations, " << fmt(timer.wall_time(), 3) << " s)";
         pcout << std::endl;
       }
     wheelset->start_rolling(axle, radius);

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <tuple>
 
 namespace WheelRail
 {
@@ -29,6 +30,7 @@ namespace WheelRail
     , solver(solver)
     , contact(contact)
     , mpi_communicator(comm)
+    , tangent(stiffness_matrix, comm)
   {
     const DoFHandler<dim> &dof_handler = solver.get_dof_handler();
     IndexSet               relevant;
@@ -55,6 +57,116 @@ namespace WheelRail
                                                 {Geometry::BoundaryIds::wheel_bore});
     bore_dofs = bore_dofs & dof_handler.locally_owned_dofs();
     u.reinit(solver.partitioner());
+
+    // K and its AMG, once: the contact tangent stays outside (StaticTangent)
+    {
+      const IndexSet &                  owned = dof_handler.locally_owned_dofs();
+      TrilinosWrappers::SparsityPattern sparsity(owned, owned, relevant, mpi_communicator);
+      DoFTools::make_sparsity_pattern(dof_handler, sparsity, constraints, false,
+                                      Utilities::MPI::this_mpi_process(mpi_communicator));
+      sparsity.compress();
+      stiffness_matrix.reinit(sparsity);
+    }
+    solver.assemble_stiffness(stiffness_matrix, constraints);
+    stiffness_matrix.compress(VectorOperation::add);
+
+    TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
+    amg_data.elliptic              = true;
+    amg_data.higher_order_elements = false;
+    amg_data.smoother_sweeps       = 2;
+    amg_data.aggregation_threshold = 0.02;
+    std::vector<std::vector<bool>> modes;
+    DoFTools::extract_constant_modes(dof_handler, ComponentMask(), modes);
+    amg_data.constant_modes = modes;
+    amg.initialize(stiffness_matrix, amg_data);
+  }
+
+
+
+  StaticTangent::StaticTangent(const TrilinosWrappers::SparseMatrix &K, MPI_Comm comm)
+    : K(K)
+    , comm(comm)
+  {}
+
+
+
+  void
+  StaticTangent::set_contact_pairs(const std::vector<ContactPair> &  pairs,
+                                   const AffineConstraints<double> &constraints,
+                                   const IndexSet &                 owned)
+  {
+    // the owner of a DoF knows its constraint; its entries (pair, DoF,
+    // coefficient) go to every rank, which keeps those on its owned DoFs
+    using Entry = std::tuple<unsigned int, types::global_dof_index, double>;
+    std::vector<Entry> mine;
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        const ContactPair &pair    = pairs[p];
+        const double       c[5]    = {1., -pair.shape[0], -pair.shape[1], -pair.shape[2], -pair.shape[3]};
+        const types::global_dof_index node[5] = {pair.slave, pair.master[0], pair.master[1],
+                                                 pair.master[2], pair.master[3]};
+        for (unsigned int a = 0; a < 5; ++a)
+          for (unsigned int i = 0; i < dim; ++i)
+            {
+              const types::global_dof_index dof = node[a] + i;
+              if (!owned.is_element(dof))
+                continue;
+              const double value = c[a] * pair.normal[i];
+              if (!constraints.is_constrained(dof))
+                mine.emplace_back(p, dof, value);
+              else // hanging: its masters; fixed: no entries
+                for (const auto &[master, weight] : *constraints.get_constraint_entries(dof))
+                  mine.emplace_back(p, master, value * weight);
+            }
+      }
+    std::vector<Entry> all;
+    for (const auto &part : Utilities::MPI::all_gather(comm, mine))
+      all.insert(all.end(), part.begin(), part.end());
+    std::stable_sort(all.begin(), all.end(), [](const Entry &x, const Entry &y) {
+      return std::get<0>(x) < std::get<0>(y);
+    });
+
+    stiffness.resize(pairs.size());
+    offsets.assign(1, 0);
+    local_index.clear();
+    coefficient.clear();
+    auto e = all.begin();
+    for (unsigned int p = 0; p < pairs.size(); ++p)
+      {
+        stiffness[p] = pairs[p].stiffness;
+        for (; e != all.end() && std::get<0>(*e) == p; ++e)
+          if (owned.is_element(std::get<1>(*e)))
+            {
+              local_index.push_back(owned.index_within_set(std::get<1>(*e)));
+              coefficient.push_back(std::get<2>(*e));
+            }
+        offsets.push_back(local_index.size());
+      }
+    gaps.resize(pairs.size());
+  }
+
+
+
+  void
+  StaticTangent::vmult(TrilinosWrappers::MPI::Vector &      dst,
+                       const TrilinosWrappers::MPI::Vector &src) const
+  {
+    K.vmult(dst, src);
+    if (stiffness.empty())
+      return;
+    const double *x = src.trilinos_vector()[0];
+    double *      y = dst.trilinos_vector()[0];
+    for (unsigned int p = 0; p < stiffness.size(); ++p)
+      {
+        double g = 0;
+        for (unsigned int k = offsets[p]; k < offsets[p + 1]; ++k)
+          g += coefficient[k] * x[local_index[k]];
+        gaps[p] = g;
+      }
+    Utilities::MPI::sum(gaps, comm, gaps);
+    for (unsigned int p = 0; p < stiffness.size(); ++p)
+      for (unsigned int k = offsets[p]; k < offsets[p + 1]; ++k)
+        y[local_index[k]] += stiffness[p] * gaps[p] * coefficient[k];
   }
 
 
@@ -62,9 +174,8 @@ namespace WheelRail
   double
   StaticContactSolver::solve_at(const double delta, StaticResult &result, std::ostream &log)
   {
-    const DoFHandler<dim> &dof_handler = solver.get_dof_handler();
-    const auto &           part        = *solver.partitioner();
-    const IndexSet &       owned       = dof_handler.locally_owned_dofs();
+    const auto &    part  = *solver.partitioner();
+    const IndexSet &owned = solver.get_dof_handler().locally_owned_dofs();
 
     // the bore moves down rigidly by delta
     for (const auto dof : bore_dofs)
@@ -73,15 +184,10 @@ namespace WheelRail
         u.local_element(i)   = (solver.dof_component(i) == 2) ? -delta : 0.;
       }
 
-    VectorType     residual;
-    double         force      = 0;
-    double         previous_norm = std::numeric_limits<double>::max();
-    const double   load_scale = std::max(parameters.statics.axle_load, 1.);
-    unsigned int   last_searches = numbers::invalid_unsigned_int;
-    TrilinosWrappers::SparsityPattern sparsity;
-    TrilinosWrappers::SparseMatrix    matrix;
-    IndexSet                          relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    VectorType   residual;
+    double       force         = 0;
+    double       previous_norm = std::numeric_limits<double>::max();
+    const double load_scale    = std::max(parameters.statics.axle_load, 1.);
 
     // residual norm over the free DoFs at the displacement v
     const auto evaluate = [&](const VectorType &v) {
@@ -121,61 +227,7 @@ namespace WheelRail
                                " of the load)."));
         ++result.newton_iterations;
 
-        // sparsity: the mesh couplings and every candidate contact pair
-        if (contact.n_searches() != last_searches)
-          {
-            last_searches = contact.n_searches();
-            IndexSet writable = relevant;
-            const auto couplings = contact.candidate_couplings();
-            std::vector<types::global_dof_index> dofs;
-            for (const auto &c : couplings)
-              for (const auto node : c)
-                for (unsigned int d = 0; d < dim; ++d)
-                  dofs.push_back(node + d);
-            std::sort(dofs.begin(), dofs.end());
-            dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-            writable.add_indices(dofs.begin(), dofs.end());
-            writable.compress();
-            sparsity.reinit(owned, owned, writable, mpi_communicator);
-            DoFTools::make_sparsity_pattern(dof_handler, sparsity, constraints, false,
-                                            Utilities::MPI::this_mpi_process(mpi_communicator));
-            for (const auto &c : couplings)
-              if (part.in_local_range(c[0]))
-                {
-                  dofs.clear();
-                  for (const auto node : c)
-                    for (unsigned int d = 0; d < dim; ++d)
-                      dofs.push_back(node + d);
-                  constraints.add_entries_local_to_global(dofs, sparsity, false);
-                }
-            sparsity.compress();
-            matrix.reinit(sparsity);
-          }
-        else
-          matrix = 0;
-
-        solver.assemble_stiffness(matrix, constraints);
-        // contact tangent k (c c^T) (x) (n n^T), c = [1, -N_1, ..., -N_4]
-        FullMatrix<double>                   Kc(15, 15);
-        std::vector<types::global_dof_index> dofs(15);
-        for (const ContactPair &p : contact.active_pairs())
-          if (part.in_local_range(p.slave))
-            {
-              const double c[5] = {1., -p.shape[0], -p.shape[1], -p.shape[2], -p.shape[3]};
-              const types::global_dof_index node[5] = {p.slave, p.master[0], p.master[1],
-                                                       p.master[2], p.master[3]};
-              for (unsigned int a = 0; a < 5; ++a)
-                for (unsigned int i = 0; i < dim; ++i)
-                  {
-                    dofs[3 * a + i] = node[a] + i;
-                    for (unsigned int b = 0; b < 5; ++b)
-                      for (unsigned int j = 0; j < dim; ++j)
-                        Kc(3 * a + i, 3 * b + j) =
-                          p.stiffness * c[a] * c[b] * p.normal[i] * p.normal[j];
-                  }
-              constraints.distribute_local_to_global(Kc, dofs, matrix);
-            }
-        matrix.compress(VectorOperation::add);
+        tangent.set_contact_pairs(contact.active_pairs(), constraints, owned);
 
         TrilinosWrappers::MPI::Vector rhs(owned, mpi_communicator), du(owned, mpi_communicator);
         for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
@@ -183,21 +235,11 @@ namespace WheelRail
             rhs[part.local_to_global(i)] = -residual.local_element(i);
         rhs.compress(VectorOperation::insert);
 
-        TrilinosWrappers::PreconditionAMG                 amg;
-        TrilinosWrappers::PreconditionAMG::AdditionalData amg_data;
-        amg_data.elliptic              = true;
-        amg_data.higher_order_elements = false;
-        amg_data.smoother_sweeps       = 2;
-        amg_data.aggregation_threshold = 0.02;
-        std::vector<std::vector<bool>> modes;
-        DoFTools::extract_constant_modes(dof_handler, ComponentMask(), modes);
-        amg_data.constant_modes = modes;
-        amg.initialize(matrix, amg_data);
         SolverControl control(5000, parameters.statics.linear_tolerance * rhs.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         try
           {
-            cg.solve(matrix, du, rhs, amg);
+            cg.solve(tangent, du, rhs, amg);
           }
         catch (const SolverControl::NoConvergence &e)
           {

@@ -143,14 +143,6 @@ namespace WheelRail
                const bool                                        advance,
                LinearAlgebra::distributed::Vector<double> &      f);
 
-    /**
-     * For every candidate slave of the last search: its x-DoF followed by the
-     * x-DoFs of the corners of its candidate faces (for a sparsity pattern
-     * that covers every pair the static solve can activate).
-     */
-    std::vector<std::vector<types::global_dof_index>>
-    candidate_couplings() const;
-
     /** Active pairs of the last add_forces() (replicated on all ranks). */
     const std::vector<ContactPair> &
     active_pairs() const
