@@ -362,8 +362,8 @@ namespace WheelRail
   PenaltyContact::gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
                                    const std::vector<unsigned int> &                 nodes)
   {
-    std::vector<double> send;
-    send.reserve(4 * nodes.size());
+    std::vector<double> &send = gather_send;
+    send.clear();
     for (const unsigned int n : nodes)
       if (partitioner->in_local_range(node_dof[n]))
         {
@@ -372,15 +372,20 @@ namespace WheelRail
           for (unsigned int d = 0; d < dim; ++d)
             send.push_back(node_X[n][d] + u.local_element(i + d));
         }
-    const int  n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    int        count   = send.size();
-    std::vector<int> counts(n_ranks), displs(n_ranks, 0);
-    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_communicator);
+    const int         n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    int               count   = send.size();
+    std::vector<int> &counts  = exchange_counts, &displs = exchange_displs;
+    counts.resize(n_ranks);
+    displs.assign(n_ranks, 0);
+    int ierr = MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_communicator);
+    AssertThrowMPI(ierr);
     for (int r = 1; r < n_ranks; ++r)
       displs[r] = displs[r - 1] + counts[r - 1];
-    std::vector<double> recv(displs.back() + counts.back());
-    MPI_Allgatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(), displs.data(),
-                   MPI_DOUBLE, mpi_communicator);
+    std::vector<double> &recv = gather_recv;
+    recv.resize(displs.back() + counts.back());
+    ierr = MPI_Allgatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(),
+                          displs.data(), MPI_DOUBLE, mpi_communicator);
+    AssertThrowMPI(ierr);
     for (unsigned int i = 0; i < recv.size(); i += 4)
       node_x[static_cast<unsigned int>(recv[i])] = Point<dim>(recv[i + 1], recv[i + 2], recv[i + 3]);
   }
@@ -789,8 +794,10 @@ namespace WheelRail
     const unsigned int rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n       = pass.candidate_slaves.size();
     const int          size    = sizeof(ContactNodeState);
-    std::vector<int>   counts(n_ranks), displs(n_ranks);
-    unsigned int       offset = 0;
+    std::vector<int> & counts  = exchange_counts, &displs = exchange_displs;
+    counts.resize(n_ranks);
+    displs.resize(n_ranks);
+    unsigned int offset = 0;
     for (unsigned int r = 0; r < n_ranks; ++r)
       {
         const unsigned int count = r < n ? (n - r + n_ranks - 1) / n_ranks : 0;

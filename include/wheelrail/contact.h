@@ -277,6 +277,10 @@ namespace WheelRail
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
+    // workspaces of gather_positions() and exchange_states(), kept so that a
+    // step allocates nothing
+    std::vector<double> gather_send, gather_recv;
+    std::vector<int>    exchange_counts, exchange_displs;
     std::vector<Pass>        passes;
     std::vector<ContactPair> pairs;
     ContactSummary           totals;

@@ -317,6 +317,11 @@ namespace WheelRail
                     VectorType &      f,
                     const bool        with_contact,
                     const bool        advance);
+    /** Request the element data of @p batch into the cache. */
+    void
+    prefetch_batch(const unsigned int batch) const;
+    /** Batches ahead of the one computed that prefetch_batch() requests. */
+    static constexpr unsigned int prefetch_distance = 2;
     void
     setup_applied_forces();
     /** Add hanging-node entries of @p f to their masters and zero them. */
