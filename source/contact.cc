@@ -347,6 +347,8 @@ namespace WheelRail
           pass.slaves[s].x_previous = pass.slaves[s].X;
         }
     node_area.resize(node_dof.size(), 0.);
+    for (Pass &pass : passes)
+      pass.bounds.assign(pass.faces.size(), FaceBound());
     node_x        = node_X;
     node_x_search = node_X;
     need_search   = true;
@@ -489,6 +491,65 @@ namespace WheelRail
 
 
 
+  void
+  PenaltyContact::update_face_bounds(Pass &pass) const
+  {
+    // compute_slaves() uses a face's projection only if it lies within
+    // |xi|, |eta| <= 1.1. A converged projection x_k of x_s is a point of
+    // the face extended to 1.1, so |x_k - c| <= R (the extended face lies
+    // in the convex hull of its corners x(+-1.1, +-1.1)), and x_s - x_k is
+    // normal to the face there: x_s = x_k + t n, |t| <= |x_s - c| + R. The
+    // normal x_xi x x_eta is bilinear in (xi, eta), a combination with
+    // non-negative weights of its values at the extended corners, so it
+    // lies within their largest angle a from the centre normal n_c. The
+    // distance of x_s from the axis (c, n_c) is then at most
+    // R + (|x_s - c| + R) sin a; a slave farther out cannot project within
+    // 1.1. Faces that are not nearly flat (sin a > 0.1) are not bounded:
+    // their projection is always computed.
+    constexpr double extension = 1.1;
+    for (const unsigned int f : pass.candidate_faces)
+      {
+        const MasterFace &face  = pass.faces[f];
+        FaceBound &       bound = pass.bounds[f];
+        BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
+                              &node_x[face.node[2]], &node_x[face.node[3]]}};
+        Point<dim>     x;
+        Tensor<1, dim> dxi, deta;
+        double         N[4];
+        bf.evaluate(0., 0., bound.centre, dxi, deta, N);
+        bound.normal        = cross_product_3d(dxi, deta);
+        const double length = bound.normal.norm();
+        bound.usable        = length > 0;
+        if (!bound.usable)
+          continue;
+        bound.normal /= length;
+        bound.radius    = 0;
+        bound.sin_angle = 0;
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            bf.evaluate((v & 1) ? extension : -extension,
+                        (v & 2) ? extension : -extension,
+                        x,
+                        dxi,
+                        deta,
+                        N);
+            bound.radius         = std::max(bound.radius, x.distance(bound.centre));
+            const Tensor<1, dim> m = cross_product_3d(dxi, deta);
+            const double         mn = m.norm();
+            if (!(mn > 0) || !(m * bound.normal > 0))
+              {
+                bound.usable = false;
+                break;
+              }
+            bound.sin_angle =
+              std::max(bound.sin_angle, cross_product_3d(m, bound.normal).norm() / mn);
+          }
+        bound.usable = bound.usable && bound.sin_angle <= 0.1;
+      }
+  }
+
+
+
   std::vector<MasterNodeState>
   PenaltyContact::master_states() const
   {
@@ -582,6 +643,8 @@ namespace WheelRail
     for (auto &n : node_normal)
       if (n.norm() > 0)
         n /= n.norm();
+    for (Pass &pass : passes)
+      update_face_bounds(pass);
 
     // each rank every n_ranks-th candidate (neighbouring slaves cost alike,
     // so this balances), then all states everywhere
@@ -657,6 +720,21 @@ namespace WheelRail
         Tensor<1, dim> best_n;
         for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
           {
+            const FaceBound &bound = pass.bounds[pass.face_lists[k]];
+            if (bound.usable)
+              {
+                // the projection cannot lie within 1.1 of this face (see
+                // update_face_bounds()): project() would give out > 0.1,
+                // skipped below; most candidates are neighbours of the
+                // face under the slave and end here
+                const Tensor<1, dim> d     = xs - bound.centre;
+                const double         dd    = d.norm_square();
+                const double         dn    = d * bound.normal;
+                const double         reach = 1.01 * (bound.radius + (std::sqrt(dd) + bound.radius) *
+                                                                   bound.sin_angle);
+                if (dd - dn * dn > reach * reach)
+                  continue;
+              }
             const MasterFace &face = pass.faces[pass.face_lists[k]];
             BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
                                   &node_x[face.node[2]], &node_x[face.node[3]]}};

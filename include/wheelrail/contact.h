@@ -225,6 +225,20 @@ namespace WheelRail
       double       stiffness; ///< k = SF K A^2 / V
       double       sign;      ///< orientation making x_xi x x_eta outward
     };
+    /**
+     * What a slave's projection onto a master face can be, bounded cheaply
+     * (see update_face_bounds()): the face extended to |xi|, |eta| <= 1.1
+     * lies in the ball (centre, radius), and its normals within the angle
+     * asin(sin_angle) of @p normal.
+     */
+    struct FaceBound
+    {
+      Point<dim>     centre;
+      Tensor<1, dim> normal; ///< unit normal at xi = eta = 0
+      double         radius    = 0;
+      double         sin_angle = 0;
+      bool           usable    = false; ///< nearly flat and not degenerate
+    };
     struct Pass
     {
       std::vector<unsigned int>     slave_node; ///< contact-node index per slave
@@ -234,6 +248,7 @@ namespace WheelRail
       std::vector<unsigned int>     candidate_faces;
       std::vector<unsigned int>     face_offsets; ///< CSR: slave -> faces
       std::vector<unsigned int>     face_lists;
+      std::vector<FaceBound>        bounds; ///< per face, valid for candidate faces
     };
 
     void
@@ -245,6 +260,9 @@ namespace WheelRail
     node_index(const types::global_dof_index dof, const Point<dim> &X);
     void
     search(const LinearAlgebra::distributed::Vector<double> &u);
+    /** FaceBound of every candidate face of @p pass at the current positions. */
+    void
+    update_face_bounds(Pass &pass) const;
     void
     gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
                      const std::vector<unsigned int> &                 nodes);
