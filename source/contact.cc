@@ -349,6 +349,11 @@ namespace WheelRail
     node_area.resize(node_dof.size(), 0.);
     for (Pass &pass : passes)
       pass.bounds.assign(pass.faces.size(), FaceBound());
+    node_normal.assign(node_dof.size(), Tensor<1, dim>());
+    normal_evaluation.assign(node_dof.size(), 0);
+    normal_offsets.assign(node_dof.size() + 1, 0);
+    normal_entries.clear();
+    evaluation = 0;
     node_x        = node_X;
     node_x_search = node_X;
     need_search   = true;
@@ -483,6 +488,7 @@ namespace WheelRail
     for (unsigned int n = 0; n < active.size(); ++n)
       if (active[n])
         active_nodes.push_back(n);
+    build_normal_adjacency();
     need_search        = false;
     steps_since_search = 0;
     ++searches;
@@ -491,9 +497,13 @@ namespace WheelRail
 
 
 
-  void
-  PenaltyContact::update_face_bounds(Pass &pass) const
+  const PenaltyContact::FaceBound &
+  PenaltyContact::face_bound(Pass &pass, const unsigned int f)
   {
+    FaceBound &bound = pass.bounds[f];
+    if (bound.evaluation == evaluation)
+      return bound;
+    bound.evaluation = evaluation;
     // compute_slaves() uses a face's projection only if it lies within
     // |xi|, |eta| <= 1.1. A converged projection x_k of x_s is a point of
     // the face extended to 1.1, so |x_k - c| <= R (the extended face lies
@@ -507,10 +517,8 @@ namespace WheelRail
     // 1.1. Faces that are not nearly flat (sin a > 0.1) are not bounded:
     // their projection is always computed.
     constexpr double extension = 1.1;
-    for (const unsigned int f : pass.candidate_faces)
-      {
+    {
         const MasterFace &face  = pass.faces[f];
-        FaceBound &       bound = pass.bounds[f];
         BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
                               &node_x[face.node[2]], &node_x[face.node[3]]}};
         Point<dim>     x;
@@ -521,7 +529,7 @@ namespace WheelRail
         const double length = bound.normal.norm();
         bound.usable        = length > 0;
         if (!bound.usable)
-          continue;
+          return bound;
         bound.normal /= length;
         bound.radius    = 0;
         bound.sin_angle = 0;
@@ -545,8 +553,77 @@ namespace WheelRail
               std::max(bound.sin_angle, cross_product_3d(m, bound.normal).norm() / mn);
           }
         bound.usable = bound.usable && bound.sin_angle <= 0.1;
-      }
+    }
+    return bound;
   }
+
+
+
+  const Tensor<1, dim> &
+  PenaltyContact::averaged_normal(const unsigned int n)
+  {
+    // Averaged nodal normals of the candidate master faces: the normal is
+    // interpolated from them over a face, so that it, and the contact force,
+    // are continuous when a slave passes from one face to its neighbour
+    // (with face normals the force direction jumps at every edge). Summed
+    // over the faces in ascending order, as one loop over all candidate
+    // faces would: the same bits on every rank, whichever node it needs.
+    Tensor<1, dim> &normal = node_normal[n];
+    if (normal_evaluation[n] == evaluation)
+      return normal;
+    normal_evaluation[n] = evaluation;
+    normal               = Tensor<1, dim>();
+    for (unsigned int e = normal_offsets[n]; e < normal_offsets[n + 1]; ++e)
+      {
+        const NormalEntry &entry = normal_entries[e];
+        const MasterFace & face  = passes[entry.pass].faces[entry.face];
+        BilinearFace       bf{{&node_x[face.node[0]], &node_x[face.node[1]],
+                               &node_x[face.node[2]], &node_x[face.node[3]]}};
+        Tensor<1, dim>     dxi, deta;
+        bf.corner_tangents(entry.corner, dxi, deta);
+        normal += face.sign * cross_product_3d(dxi, deta);
+      }
+    if (normal.norm() > 0)
+      normal /= normal.norm();
+    return normal;
+  }
+
+
+
+  void
+  PenaltyContact::build_normal_adjacency()
+  {
+    normal_offsets.assign(node_dof.size() + 1, 0);
+    for (const Pass &pass : passes)
+      for (const unsigned int f : pass.candidate_faces)
+        for (unsigned int v = 0; v < 4; ++v)
+          ++normal_offsets[pass.faces[f].node[v] + 1];
+    for (unsigned int n = 0; n < node_dof.size(); ++n)
+      normal_offsets[n + 1] += normal_offsets[n];
+    normal_entries.resize(normal_offsets.back());
+    std::vector<unsigned int> next(normal_offsets.begin(), normal_offsets.end() - 1);
+    for (unsigned int p = 0; p < passes.size(); ++p)
+      for (const unsigned int f : passes[p].candidate_faces)
+        for (unsigned int v = 0; v < 4; ++v)
+          normal_entries[next[passes[p].faces[f].node[v]]++] = NormalEntry{p, f, v};
+    // positions may have changed with the search or the load
+    ++evaluation;
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  PenaltyContact::own_candidates(const unsigned int n) const
+  {
+    const unsigned long n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned long rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
+    return {static_cast<unsigned int>(n * rank / n_ranks),
+            static_cast<unsigned int>(n * (rank + 1) / n_ranks)};
+  }
+
+
+
+
 
 
 
@@ -622,32 +699,12 @@ namespace WheelRail
           break;
         }
 
-    // Averaged nodal normals of the candidate master faces: the normal is
-    // interpolated from them over a face, so that it, and the contact force,
-    // are continuous when a slave passes from one face to its neighbour
-    // (with face normals the force direction jumps at every edge).
-    node_normal.assign(node_dof.size(), Tensor<1, dim>());
-    for (const Pass &pass : passes)
-      for (const unsigned int f : pass.candidate_faces)
-        {
-          const MasterFace &face = pass.faces[f];
-          BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
-                                &node_x[face.node[2]], &node_x[face.node[3]]}};
-          for (unsigned int v = 0; v < 4; ++v)
-            {
-              Tensor<1, dim> dxi, deta;
-              bf.corner_tangents(v, dxi, deta);
-              node_normal[face.node[v]] += face.sign * cross_product_3d(dxi, deta);
-            }
-        }
-    for (auto &n : node_normal)
-      if (n.norm() > 0)
-        n /= n.norm();
-    for (Pass &pass : passes)
-      update_face_bounds(pass);
+    // the averaged nodal normals and the face bounds of this evaluation are
+    // computed where compute_slaves() first needs them
+    ++evaluation;
 
-    // each rank every n_ranks-th candidate (neighbouring slaves cost alike,
-    // so this balances), then all states everywhere
+    // each rank a block of the candidates (ordered by position: a rank's
+    // slaves share faces and nodal normals), then all states everywhere
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     for (Pass &pass : passes)
       {
@@ -698,10 +755,9 @@ namespace WheelRail
   void
   PenaltyContact::compute_slaves(Pass &pass, const double dt, const bool advance)
   {
-    const double       margin  = prm.search_margin;
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
-    for (unsigned int c = rank; c < pass.candidate_slaves.size(); c += n_ranks)
+    const double margin = prm.search_margin;
+    const auto   own    = own_candidates(pass.candidate_slaves.size());
+    for (unsigned int c = own.first; c < own.second; ++c)
       {
         const unsigned int s     = pass.candidate_slaves[c];
         ContactNodeState & state = pass.slaves[s];
@@ -720,11 +776,11 @@ namespace WheelRail
         Tensor<1, dim> best_n;
         for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
           {
-            const FaceBound &bound = pass.bounds[pass.face_lists[k]];
+            const FaceBound &bound = face_bound(pass, pass.face_lists[k]);
             if (bound.usable)
               {
                 // the projection cannot lie within 1.1 of this face (see
-                // update_face_bounds()): project() would give out > 0.1,
+                // face_bound()): project() would give out > 0.1,
                 // skipped below; most candidates are neighbours of the
                 // face under the slave and end here
                 const Tensor<1, dim> d     = xs - bound.centre;
@@ -751,7 +807,7 @@ namespace WheelRail
             bf.evaluate(xi, eta, x, dxi, deta, N);
             Tensor<1, dim> n;
             for (unsigned int j = 0; j < 4; ++j)
-              n += N[j] * node_normal[face.node[j]];
+              n += N[j] * averaged_normal(face.node[j]);
             n /= n.norm();
             const double gap = n * (xs - x);
             if (gap < -margin)
@@ -867,31 +923,29 @@ namespace WheelRail
   void
   PenaltyContact::exchange_states(Pass &pass)
   {
-    // rank r computed the candidates r, r + n_ranks, ...: packed per rank
+    // rank r computed the block own_candidates() gives it
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const unsigned int rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int n       = pass.candidate_slaves.size();
     const int          size    = sizeof(ContactNodeState);
     std::vector<int> & counts  = exchange_counts, &displs = exchange_displs;
     counts.resize(n_ranks);
     displs.resize(n_ranks);
-    unsigned int offset = 0;
     for (unsigned int r = 0; r < n_ranks; ++r)
       {
-        const unsigned int count = r < n ? (n - r + n_ranks - 1) / n_ranks : 0;
-        counts[r]                = count * size;
-        displs[r]                = offset * size;
-        offset += count;
+        const unsigned int first = static_cast<unsigned long>(n) * r / n_ranks;
+        const unsigned int last  = static_cast<unsigned long>(n) * (r + 1) / n_ranks;
+        counts[r]                = (last - first) * size;
+        displs[r]                = first * size;
       }
     exchange_buffer.resize(n);
-    for (unsigned int c = rank, i = displs[rank] / size; c < n; c += n_ranks, ++i)
-      exchange_buffer[i] = pass.slaves[pass.candidate_slaves[c]];
+    const auto own = own_candidates(n);
+    for (unsigned int c = own.first; c < own.second; ++c)
+      exchange_buffer[c] = pass.slaves[pass.candidate_slaves[c]];
     const int ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_buffer.data(),
                                     counts.data(), displs.data(), MPI_BYTE, mpi_communicator);
     AssertThrowMPI(ierr);
-    for (unsigned int r = 0; r < n_ranks; ++r)
-      for (unsigned int c = r, i = displs[r] / size; c < n; c += n_ranks, ++i)
-        pass.slaves[pass.candidate_slaves[c]] = exchange_buffer[i];
+    for (unsigned int c = 0; c < n; ++c)
+      pass.slaves[pass.candidate_slaves[c]] = exchange_buffer[c];
   }
 
 
@@ -1002,5 +1056,6 @@ namespace WheelRail
     in.pod(steps_since_search);
     in.pod(need_search);
     in.pod(searches);
+    build_normal_adjacency();
   }
 } // namespace WheelRail

@@ -1021,10 +1021,13 @@ namespace WheelRail
     // the slowest rank sets the pace: maxima over the ranks
     const double local[6] = {t.elements, t.contact, t.update, t.communication, t.energies,
                              output_seconds};
-    double       slowest[6];
+    double       slowest[6], fastest[6];
     Utilities::MPI::max(ArrayView<const double>(local, 6),
                         mpi_communicator,
                         ArrayView<double>(slowest, 6));
+    Utilities::MPI::min(ArrayView<const double>(local, 6),
+                        mpi_communicator,
+                        ArrayView<double>(fastest, 6));
     const double wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
     const Utilities::System::MemoryStats memory = [] {
       Utilities::System::MemoryStats m;
@@ -1046,6 +1049,14 @@ namespace WheelRail
           << "  split (slowest rank, s):";
     for (unsigned int i = 0; i < 6; ++i)
       pcout << " " << names[i] << " " << fmt(slowest[i], 4);
+    if (n_ranks > 1)
+      {
+        // the imbalance: what a fast rank's parts wait for shows up in the
+        // next part that communicates (the contact's position gather)
+        pcout << std::endl << "  split (fastest rank, s):";
+        for (unsigned int i = 0; i < 6; ++i)
+          pcout << " " << names[i] << " " << fmt(fastest[i], 4);
+      }
     pcout << std::endl
           << "  peak memory per rank " << fmt(peak_mb, 5) << " MB" << std::endl
           << "  the paper's full run (" << fmt(full_steps, 6) << " steps of 2.6e-8 s) at this rate on "

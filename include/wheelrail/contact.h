@@ -9,8 +9,10 @@
  * nodes are gathered and the candidate slaves and faces (within the search
  * margin) are chosen; at every step only the candidates' positions are
  * gathered (one allgatherv). Each rank then computes the closest point,
- * penalty force and friction return map of every n_ranks-th candidate
- * slave, these states are exchanged (one allgatherv), and
+ * penalty force and friction return map of its block of the candidate
+ * slaves (ordered by position), with the face bounds and averaged nodal
+ * normals of the faces its block needs (computed on first use), these
+ * states are exchanged (one allgatherv), and
  * every rank sums the totals and adds the forces on the DoFs it owns, in the
  * same slave order. Results are therefore independent of the number of
  * ranks, and a slave node and its master face may live on any ranks.
@@ -227,7 +229,7 @@ namespace WheelRail
     };
     /**
      * What a slave's projection onto a master face can be, bounded cheaply
-     * (see update_face_bounds()): the face extended to |xi|, |eta| <= 1.1
+     * (see face_bound()): the face extended to |xi|, |eta| <= 1.1
      * lies in the ball (centre, radius), and its normals within the angle
      * asin(sin_angle) of @p normal.
      */
@@ -238,6 +240,7 @@ namespace WheelRail
       double         radius    = 0;
       double         sin_angle = 0;
       bool           usable    = false; ///< nearly flat and not degenerate
+      unsigned long  evaluation = 0;    ///< add_forces() call it was computed in
     };
     struct Pass
     {
@@ -248,7 +251,14 @@ namespace WheelRail
       std::vector<unsigned int>     candidate_faces;
       std::vector<unsigned int>     face_offsets; ///< CSR: slave -> faces
       std::vector<unsigned int>     face_lists;
-      std::vector<FaceBound>        bounds; ///< per face, valid for candidate faces
+      std::vector<FaceBound>        bounds; ///< per face, computed when first needed
+    };
+    /** A candidate master face at a contact node: what its averaged normal sums. */
+    struct NormalEntry
+    {
+      unsigned int pass;
+      unsigned int face;
+      unsigned int corner;
     };
 
     void
@@ -260,14 +270,26 @@ namespace WheelRail
     node_index(const types::global_dof_index dof, const Point<dim> &X);
     void
     search(const LinearAlgebra::distributed::Vector<double> &u);
-    /** FaceBound of every candidate face of @p pass at the current positions. */
+    /** The FaceBound of face @p f of @p pass at the current positions,
+     *  computed at its first use in this evaluation. */
+    const FaceBound &
+    face_bound(Pass &pass, const unsigned int f);
+    /** The averaged normal of the candidate master faces at contact node
+     *  @p n at the current positions, computed at its first use in this
+     *  evaluation. */
+    const Tensor<1, dim> &
+    averaged_normal(const unsigned int n);
+    /** The candidate faces at each contact node (after a search or load). */
     void
-    update_face_bounds(Pass &pass) const;
+    build_normal_adjacency();
+    /** The candidates [first, second) of @p n that this rank computes. */
+    std::pair<unsigned int, unsigned int>
+    own_candidates(const unsigned int n) const;
     void
     gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
                      const std::vector<unsigned int> &                 nodes);
     /** Closest point, penalty force and friction of this rank's share of
-     *  the candidate slaves of @p pass (every n_ranks-th): their states only. */
+     *  the candidate slaves of @p pass (a block): their states only. */
     void
     compute_slaves(Pass &pass, const double dt, const bool advance);
     /** Every rank computed its share of the candidates: gather all. */
@@ -290,6 +312,10 @@ namespace WheelRail
     std::vector<Point<dim>>              node_x;       ///< current positions
     std::vector<Point<dim>>              node_x_search; ///< at the last search
     std::vector<Tensor<1, dim>>          node_normal; ///< averaged master normals
+    std::vector<unsigned long>           normal_evaluation; ///< when node_normal[n] was computed
+    std::vector<unsigned int>            normal_offsets; ///< CSR: node -> NormalEntry
+    std::vector<NormalEntry>             normal_entries;
+    unsigned long                        evaluation = 0; ///< add_forces() calls
     std::vector<double>                  node_area;   ///< master tributary area (first pass)
     std::vector<unsigned int>            active_nodes;  ///< gathered every step
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
