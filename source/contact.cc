@@ -509,51 +509,49 @@ namespace WheelRail
     // the face extended to 1.1, so |x_k - c| <= R (the extended face lies
     // in the convex hull of its corners x(+-1.1, +-1.1)), and x_s - x_k is
     // normal to the face there: x_s = x_k + t n, |t| <= |x_s - c| + R. The
-    // normal x_xi x x_eta is bilinear in (xi, eta), a combination with
+    // normal x_xi x x_eta is affine in (xi, eta), a combination with
     // non-negative weights of its values at the extended corners, so it
     // lies within their largest angle a from the centre normal n_c. The
     // distance of x_s from the axis (c, n_c) is then at most
     // R + (|x_s - c| + R) sin a; a slave farther out cannot project within
     // 1.1. Faces that are not nearly flat (sin a > 0.1) are not bounded:
     // their projection is always computed.
-    constexpr double extension = 1.1;
-    {
-        const MasterFace &face  = pass.faces[f];
-        BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
-                              &node_x[face.node[2]], &node_x[face.node[3]]}};
-        Point<dim>     x;
-        Tensor<1, dim> dxi, deta;
-        double         N[4];
-        bf.evaluate(0., 0., bound.centre, dxi, deta, N);
-        bound.normal        = cross_product_3d(dxi, deta);
-        const double length = bound.normal.norm();
-        bound.usable        = length > 0;
-        if (!bound.usable)
-          return bound;
-        bound.normal /= length;
-        bound.radius    = 0;
-        bound.sin_angle = 0;
-        for (unsigned int v = 0; v < 4; ++v)
+    // In closed form, x = c + xi g1 + eta g2 + xi eta w, and the normal
+    // x_xi x x_eta = n0 + xi (g1 x w) + eta (w x g2) is even affine.
+    constexpr double  e    = 1.1; // the extension
+    const MasterFace &face = pass.faces[f];
+    const Point<dim> &p0 = node_x[face.node[0]], &p1 = node_x[face.node[1]],
+                     &p2 = node_x[face.node[2]], &p3 = node_x[face.node[3]];
+    const Tensor<1, dim> g1 = 0.25 * ((p1 - p0) + (p3 - p2));
+    const Tensor<1, dim> g2 = 0.25 * ((p2 - p0) + (p3 - p1));
+    const Tensor<1, dim> w  = 0.25 * ((p0 - p1) + (p3 - p2));
+    bound.centre            = Point<dim>(0.25 * (p0 + p1 + p2 + p3));
+    const Tensor<1, dim> n0 = cross_product_3d(g1, g2);
+    const double     length = n0.norm();
+    bound.usable            = length > 0;
+    if (!bound.usable)
+      return bound;
+    bound.normal = n0 / length;
+    // the normal's change across the face, and its part across n0
+    const Tensor<1, dim> a = cross_product_3d(g1, w), b = cross_product_3d(w, g2);
+    const Tensor<1, dim> at = cross_product_3d(a, bound.normal), bt = cross_product_3d(b, bound.normal);
+    const double         an = a * bound.normal, bn = b * bound.normal;
+    bound.radius    = 0;
+    bound.sin_angle = 0;
+    for (unsigned int v = 0; v < 4; ++v)
+      {
+        const double xi = (v & 1) ? e : -e, eta = (v & 2) ? e : -e;
+        bound.radius    = std::max(bound.radius, (xi * g1 + eta * g2 + xi * eta * w).norm());
+        const double along = length + xi * an + eta * bn; // m . n0 / |n0|
+        if (!(along > 0))
           {
-            bf.evaluate((v & 1) ? extension : -extension,
-                        (v & 2) ? extension : -extension,
-                        x,
-                        dxi,
-                        deta,
-                        N);
-            bound.radius         = std::max(bound.radius, x.distance(bound.centre));
-            const Tensor<1, dim> m = cross_product_3d(dxi, deta);
-            const double         mn = m.norm();
-            if (!(mn > 0) || !(m * bound.normal > 0))
-              {
-                bound.usable = false;
-                break;
-              }
-            bound.sin_angle =
-              std::max(bound.sin_angle, cross_product_3d(m, bound.normal).norm() / mn);
+            bound.usable = false;
+            return bound;
           }
-        bound.usable = bound.usable && bound.sin_angle <= 0.1;
-    }
+        const double across = (xi * at + eta * bt).norm(); // |m x n0| / |n0|
+        bound.sin_angle = std::max(bound.sin_angle, across / std::sqrt(along * along + across * across));
+      }
+    bound.usable = bound.sin_angle <= 0.1;
     return bound;
   }
 
