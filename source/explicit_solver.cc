@@ -336,15 +336,19 @@ namespace WheelRail
                                                     ghosts,
                                                     mpi_communicator);
 
-    constraint_lines.clear();
+    constrained_dofs.clear();
+    constraint_offsets.assign(1, 0);
+    constraint_masters.clear();
+    constraint_weights.clear();
     for (const auto &line : hanging_constraints.get_lines())
       {
-        std::vector<std::pair<unsigned int, double>> masters;
         for (const auto &entry : line.entries)
-          masters.emplace_back(vector_partitioner->global_to_local(entry.first),
-                               entry.second);
-        constraint_lines.emplace_back(vector_partitioner->global_to_local(line.index),
-                                      masters);
+          {
+            constraint_masters.push_back(vector_partitioner->global_to_local(entry.first));
+            constraint_weights.push_back(entry.second);
+          }
+        constrained_dofs.push_back(vector_partitioner->global_to_local(line.index));
+        constraint_offsets.push_back(constraint_masters.size());
       }
 
     for (VectorType *vec : {&u, &v, &f, &v_old, &mass, &inv_mass, &f_ext, &u0})
@@ -620,11 +624,11 @@ namespace WheelRail
         inv_mass.local_element(i) = mass.local_element(i) > 0 ? 1. / mass.local_element(i) : 0.;
       }
     // hanging DoFs carry neither mass nor load: they follow their masters
-    for (const auto &line : constraint_lines)
-      if (line.first < inv_mass.locally_owned_size())
+    for (const unsigned int i : constrained_dofs)
+      if (i < inv_mass.locally_owned_size())
         {
-          inv_mass.local_element(line.first) = 0;
-          f_ext.local_element(line.first)    = 0;
+          inv_mass.local_element(i) = 0;
+          f_ext.local_element(i)    = 0;
         }
   }
 
@@ -797,26 +801,37 @@ namespace WheelRail
   void
   ExplicitSolver::condense(VectorType &x) const
   {
-    for (const auto &line : constraint_lines)
+    // flat arrays: the lines stream, only the masters are gathered
+    double *X = x.begin();
+    for (unsigned int k = 0; k < constrained_dofs.size(); ++k)
       {
-        const double value = x.local_element(line.first);
-        for (const auto &m : line.second)
-          x.local_element(m.first) += m.second * value;
-        x.local_element(line.first) = 0;
+        const double value = X[constrained_dofs[k]];
+        for (unsigned int j = constraint_offsets[k]; j < constraint_offsets[k + 1]; ++j)
+          X[constraint_masters[j]] += constraint_weights[j] * value;
+        X[constrained_dofs[k]] = 0;
       }
   }
 
 
 
   void
-  ExplicitSolver::distribute(VectorType &x) const
+  ExplicitSolver::distribute(VectorType &x, VectorType *y) const
   {
-    for (const auto &line : constraint_lines)
+    // both vectors in one pass over the lines (u and v every step)
+    double *X = x.begin();
+    double *Y = y ? y->begin() : nullptr;
+    for (unsigned int k = 0; k < constrained_dofs.size(); ++k)
       {
-        double value = 0;
-        for (const auto &m : line.second)
-          value += m.second * x.local_element(m.first);
-        x.local_element(line.first) = value;
+        double value = 0, value_y = 0;
+        for (unsigned int j = constraint_offsets[k]; j < constraint_offsets[k + 1]; ++j)
+          {
+            value += constraint_weights[j] * X[constraint_masters[j]];
+            if (Y)
+              value_y += constraint_weights[j] * Y[constraint_masters[j]];
+          }
+        X[constrained_dofs[k]] = value;
+        if (Y)
+          Y[constrained_dofs[k]] = value_y;
       }
   }
 
@@ -1359,8 +1374,7 @@ namespace WheelRail
     u.update_ghost_values();
     v.update_ghost_values();
     times.communication += lap(clock);
-    distribute(u);
-    distribute(v);
+    distribute(u, &v);
     times.update += lap(clock);
     t = t_new;
     ++n_steps;

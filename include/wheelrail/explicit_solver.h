@@ -327,9 +327,9 @@ namespace WheelRail
     /** Add hanging-node entries of @p f to their masters and zero them. */
     void
     condense(VectorType &f) const;
-    /** Set hanging-node entries of @p x from their masters. */
+    /** Set hanging-node entries of @p x (and of @p y) from their masters. */
     void
-    distribute(VectorType &x) const;
+    distribute(VectorType &x, VectorType *y = nullptr) const;
     /** Internal and hourglass energy at the current u. */
     void
     strain_energies(Energies &e) const;
@@ -342,9 +342,14 @@ namespace WheelRail
     AffineConstraints<double>                  hanging_constraints;
     std::shared_ptr<const Utilities::MPI::Partitioner> vector_partitioner;
 
-    /** Hanging-node constraints in local indices: (dof, [(master, w)]). */
-    std::vector<std::pair<unsigned int, std::vector<std::pair<unsigned int, double>>>>
-      constraint_lines;
+    /** Hanging-node constraints in local indices, flat (CSR): line k
+     *  constrains constrained_dofs[k] to the masters constraint_masters[j]
+     *  with weights constraint_weights[j], j in [constraint_offsets[k],
+     *  constraint_offsets[k + 1]). */
+    std::vector<unsigned int> constrained_dofs;
+    std::vector<unsigned int> constraint_offsets;
+    std::vector<unsigned int> constraint_masters;
+    std::vector<double>       constraint_weights;
 
     // Element data, batches of n_lanes cells, structure of arrays.
     unsigned int                   n_cells   = 0;
