@@ -437,13 +437,50 @@ namespace WheelRail
         pass.face_offsets.assign(1, 0);
         pass.face_lists.clear();
         std::vector<bool> face_used(pass.faces.size(), false);
+
+        // the queries of this rank's block of the slaves, packed as
+        // (slave, number of faces, faces in ascending order), then all
+        // ranks' blocks in slave order on every rank
+        const auto own = own_candidates(pass.slaves.size());
+        std::vector<unsigned int> found;
         std::vector<std::pair<BoostBox, unsigned int>> hits;
-        for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+        for (unsigned int s = own.first; s < own.second; ++s)
           {
             const Point<dim> &x = node_x[pass.slave_node[s]];
             hits.clear();
             tree.query(bgi::intersects(BoostPoint(x[0], x[1], x[2])), std::back_inserter(hits));
             if (hits.empty())
+              continue;
+            found.push_back(s);
+            found.push_back(hits.size());
+            const std::size_t first = found.size();
+            for (const auto &h : hits)
+              found.push_back(h.second);
+            std::sort(found.begin() + first, found.end());
+          }
+        const int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+        if (n_ranks > 1)
+          {
+            int               count  = found.size();
+            std::vector<int> &counts = exchange_counts, &displs = exchange_displs;
+            counts.resize(n_ranks);
+            displs.assign(n_ranks, 0);
+            int ierr = MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_communicator);
+            AssertThrowMPI(ierr);
+            for (int r = 1; r < n_ranks; ++r)
+              displs[r] = displs[r - 1] + counts[r - 1];
+            std::vector<unsigned int> merged(displs.back() + counts.back());
+            ierr = MPI_Allgatherv(found.data(), count, MPI_UNSIGNED, merged.data(), counts.data(),
+                                  displs.data(), MPI_UNSIGNED, mpi_communicator);
+            AssertThrowMPI(ierr);
+            found.swap(merged);
+          }
+
+        std::size_t next = 0; // the next packed slave in found
+        for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+          {
+            const Point<dim> &x = node_x[pass.slave_node[s]];
+            if (next >= found.size() || found[next] != s)
               {
                 // out of reach: no contact and no friction memory
                 pass.slaves[s].in_contact       = false;
@@ -452,15 +489,14 @@ namespace WheelRail
                 pass.slaves[s].face             = -1;
                 continue;
               }
-            std::vector<unsigned int> list;
-            for (const auto &h : hits)
-              list.push_back(h.second);
-            std::sort(list.begin(), list.end());
+            const unsigned int n_faces = found[next + 1];
+            const unsigned int *list    = &found[next + 2];
+            next += 2 + n_faces;
             pass.candidate_slaves.push_back(s);
             active[pass.slave_node[s]] = true;
             if (!was_candidate[s])
               pass.slaves[s].x_previous = x;
-            for (const unsigned int f : list)
+            for (const unsigned int f : ArrayView<const unsigned int>(list, n_faces))
               {
                 pass.face_lists.push_back(f);
                 if (!face_used[f])
