@@ -744,7 +744,7 @@ namespace WheelRail
       {
         compute_slaves(pass, dt, advance);
         if (n_ranks > 1)
-          exchange_states(pass);
+          exchange_states(pass, advance);
       }
     pairs.clear();
     totals = ContactSummary();
@@ -863,14 +863,7 @@ namespace WheelRail
         state.gap = best_face >= 0 ? best_gap : 0.;
         if (best_face < 0 || best_gap >= 0)
           {
-            state.in_contact       = false;
-            state.normal_force     = 0;
-            state.tangential_force = Tensor<1, dim>();
-            state.slip_velocity    = 0;
-            state.slip_rate        = Tensor<1, dim>();
-            state.slipping         = false;
-            if (advance)
-              state.face = -1;
+            separate(state, xs, state.gap, advance);
             continue;
           }
 
@@ -955,12 +948,40 @@ namespace WheelRail
 
 
   void
-  PenaltyContact::exchange_states(Pass &pass)
+  PenaltyContact::separate(ContactNodeState &state,
+                           const Point<dim> &xs,
+                           const double      gap,
+                           const bool        advance)
   {
-    // rank r computed the block own_candidates() gives it
+    state.x             = xs;
+    state.friction_loss = 0;
+    state.damping_work  = 0;
+    if (advance)
+      state.x_previous = xs;
+    state.gap              = gap;
+    state.in_contact       = false;
+    state.normal_force     = 0;
+    state.tangential_force = Tensor<1, dim>();
+    state.slip_velocity    = 0;
+    state.slip_rate        = Tensor<1, dim>();
+    state.slipping         = false;
+    if (advance)
+      state.face = -1;
+  }
+
+
+
+  void
+  PenaltyContact::exchange_states(Pass &pass, const bool advance)
+  {
+    // Rank r computed the block own_candidates() gives it. Most candidates
+    // are not in contact, and their state follows from the gap alone
+    // (separate(), with the position every rank has): only the states in
+    // contact travel whole. First the (contact, gap) pairs of all blocks,
+    // then the contact states, whose number per rank the pairs tell.
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     const unsigned int n       = pass.candidate_slaves.size();
-    const int          size    = sizeof(ContactNodeState);
+    const auto         own     = own_candidates(n);
     std::vector<int> & counts  = exchange_counts, &displs = exchange_displs;
     counts.resize(n_ranks);
     displs.resize(n_ranks);
@@ -968,18 +989,56 @@ namespace WheelRail
       {
         const unsigned int first = static_cast<unsigned long>(n) * r / n_ranks;
         const unsigned int last  = static_cast<unsigned long>(n) * (r + 1) / n_ranks;
-        counts[r]                = (last - first) * size;
-        displs[r]                = first * size;
+        counts[r]                = 2 * (last - first);
+        displs[r]                = 2 * first;
       }
-    exchange_buffer.resize(n);
-    const auto own = own_candidates(n);
+    exchange_gaps.resize(2 * n);
+    exchange_buffer.clear();
     for (unsigned int c = own.first; c < own.second; ++c)
-      exchange_buffer[c] = pass.slaves[pass.candidate_slaves[c]];
-    const int ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_buffer.data(),
-                                    counts.data(), displs.data(), MPI_BYTE, mpi_communicator);
+      {
+        const ContactNodeState &state = pass.slaves[pass.candidate_slaves[c]];
+        exchange_gaps[2 * c]          = state.in_contact ? 1. : 0.;
+        exchange_gaps[2 * c + 1]      = state.gap;
+      }
+    int ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_gaps.data(),
+                              counts.data(), displs.data(), MPI_DOUBLE, mpi_communicator);
     AssertThrowMPI(ierr);
-    for (unsigned int c = 0; c < n; ++c)
-      pass.slaves[pass.candidate_slaves[c]] = exchange_buffer[c];
+
+    // the contact states, in candidate order
+    const int    size  = sizeof(ContactNodeState);
+    unsigned int total = 0;
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        const unsigned int first = displs[r] / 2, last = first + counts[r] / 2;
+        unsigned int       count = 0;
+        for (unsigned int c = first; c < last; ++c)
+          count += exchange_gaps[2 * c] > 0;
+        counts[r] = count * size;
+        displs[r] = total * size;
+        total += count;
+      }
+    exchange_buffer.resize(total);
+    for (unsigned int c = own.first, i = displs[Utilities::MPI::this_mpi_process(mpi_communicator)] / size;
+         c < own.second;
+         ++c)
+      if (exchange_gaps[2 * c] > 0)
+        exchange_buffer[i++] = pass.slaves[pass.candidate_slaves[c]];
+    ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_buffer.data(),
+                          counts.data(), displs.data(), MPI_BYTE, mpi_communicator);
+    AssertThrowMPI(ierr);
+    for (unsigned int c = 0, i = 0; c < n; ++c)
+      {
+        const bool in_contact = exchange_gaps[2 * c] > 0;
+        if (c < own.first || c >= own.second)
+          {
+            const unsigned int s = pass.candidate_slaves[c];
+            if (in_contact)
+              pass.slaves[s] = exchange_buffer[i];
+            else
+              separate(pass.slaves[s], node_x[pass.slave_node[s]], exchange_gaps[2 * c + 1], advance);
+          }
+        i += in_contact;
+      }
   }
 
 

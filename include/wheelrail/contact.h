@@ -294,7 +294,12 @@ namespace WheelRail
     compute_slaves(Pass &pass, const double dt, const bool advance);
     /** Every rank computed its share of the candidates: gather all. */
     void
-    exchange_states(Pass &pass);
+    exchange_states(Pass &pass, const bool advance);
+    /** The state of a candidate slave at @p xs that is not in contact
+     *  (gap @p gap >= 0, or no face within reach), as compute_slaves()
+     *  leaves it. */
+    static void
+    separate(ContactNodeState &state, const Point<dim> &xs, const double gap, const bool advance);
     /** Totals, dissipation and active pairs from the states, in slave order. */
     void
     accumulate(const Pass &pass, const bool advance);
@@ -321,6 +326,7 @@ namespace WheelRail
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
+    std::vector<double>           exchange_gaps;   ///< (in contact, gap) per candidate
     // workspaces of gather_positions() and exchange_states(), kept so that a
     // step allocates nothing
     std::vector<double> gather_send, gather_recv;
