@@ -379,6 +379,20 @@ namespace WheelRail
           for (unsigned int d = 0; d < dim; ++d)
             send.push_back(node_X[n][d] + u.local_element(i + d));
         }
+    std::vector<double> &recv = gather_recv;
+    all_gather_concatenated(send, MPI_DOUBLE, recv);
+    for (unsigned int i = 0; i < recv.size(); i += 4)
+      node_x[static_cast<unsigned int>(recv[i])] = Point<dim>(recv[i + 1], recv[i + 2], recv[i + 3]);
+  }
+
+
+
+  template <typename T>
+  void
+  PenaltyContact::all_gather_concatenated(const std::vector<T> &send,
+                                          const MPI_Datatype    type,
+                                          std::vector<T> &      recv)
+  {
     const int         n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     int               count   = send.size();
     std::vector<int> &counts  = exchange_counts, &displs = exchange_displs;
@@ -388,13 +402,10 @@ namespace WheelRail
     AssertThrowMPI(ierr);
     for (int r = 1; r < n_ranks; ++r)
       displs[r] = displs[r - 1] + counts[r - 1];
-    std::vector<double> &recv = gather_recv;
     recv.resize(displs.back() + counts.back());
-    ierr = MPI_Allgatherv(send.data(), count, MPI_DOUBLE, recv.data(), counts.data(),
-                          displs.data(), MPI_DOUBLE, mpi_communicator);
+    ierr = MPI_Allgatherv(send.data(), count, type, recv.data(), counts.data(), displs.data(),
+                          type, mpi_communicator);
     AssertThrowMPI(ierr);
-    for (unsigned int i = 0; i < recv.size(); i += 4)
-      node_x[static_cast<unsigned int>(recv[i])] = Point<dim>(recv[i + 1], recv[i + 2], recv[i + 3]);
   }
 
 
@@ -458,21 +469,10 @@ namespace WheelRail
               found.push_back(h.second);
             std::sort(found.begin() + first, found.end());
           }
-        const int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-        if (n_ranks > 1)
+        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
           {
-            int               count  = found.size();
-            std::vector<int> &counts = exchange_counts, &displs = exchange_displs;
-            counts.resize(n_ranks);
-            displs.assign(n_ranks, 0);
-            int ierr = MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_communicator);
-            AssertThrowMPI(ierr);
-            for (int r = 1; r < n_ranks; ++r)
-              displs[r] = displs[r - 1] + counts[r - 1];
-            std::vector<unsigned int> merged(displs.back() + counts.back());
-            ierr = MPI_Allgatherv(found.data(), count, MPI_UNSIGNED, merged.data(), counts.data(),
-                                  displs.data(), MPI_UNSIGNED, mpi_communicator);
-            AssertThrowMPI(ierr);
+            std::vector<unsigned int> merged;
+            all_gather_concatenated(found, MPI_UNSIGNED, merged);
             found.swap(merged);
           }
 
@@ -640,8 +640,6 @@ namespace WheelRail
       for (const unsigned int f : passes[p].candidate_faces)
         for (unsigned int v = 0; v < 4; ++v)
           normal_entries[next[passes[p].faces[f].node[v]]++] = NormalEntry{p, f, v};
-    // positions may have changed with the search or the load
-    ++evaluation;
   }
 
 

@@ -268,6 +268,11 @@ namespace WheelRail
                  Pass &                   pass);
     unsigned int
     node_index(const types::global_dof_index dof, const Point<dim> &X);
+    /** Every rank's @p send, concatenated in rank order, into @p recv on
+     *  every rank (MPI type @p type of T). */
+    template <typename T>
+    void
+    all_gather_concatenated(const std::vector<T> &send, const MPI_Datatype type, std::vector<T> &recv);
     void
     search(const LinearAlgebra::distributed::Vector<double> &u);
     /** The FaceBound of face @p f of @p pass at the current positions,
