@@ -551,9 +551,9 @@ namespace WheelRail
     // distance of x_s from the axis (c, n_c) is then at most
     // R + (|x_s - c| + R) sin a; a slave farther out cannot project within
     // 1.1. Faces that are not nearly flat (sin a > 0.1) are not bounded:
-    // their projection is always computed.
-    // In closed form, x = c + xi g1 + eta g2 + xi eta w, and the normal
-    // x_xi x x_eta = n0 + xi (g1 x w) + eta (w x g2) is even affine.
+    // their projection is always computed. In closed form,
+    // x = c + xi g1 + eta g2 + xi eta w and x_xi x x_eta = n0 + xi (g1 x w)
+    // + eta (w x g2).
     constexpr double  e    = 1.1; // the extension
     const MasterFace &face = pass.faces[f];
     const Point<dim> &p0 = node_x[face.node[0]], &p1 = node_x[face.node[1]],
@@ -645,17 +645,20 @@ namespace WheelRail
 
 
   std::pair<unsigned int, unsigned int>
-  PenaltyContact::own_candidates(const unsigned int n) const
+  PenaltyContact::candidate_block(const unsigned int n, const unsigned int rank) const
   {
     const unsigned long n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const unsigned long rank    = Utilities::MPI::this_mpi_process(mpi_communicator);
-    return {static_cast<unsigned int>(n * rank / n_ranks),
-            static_cast<unsigned int>(n * (rank + 1) / n_ranks)};
+    return {static_cast<unsigned int>(n * static_cast<unsigned long>(rank) / n_ranks),
+            static_cast<unsigned int>(n * (rank + 1ul) / n_ranks)};
   }
 
 
 
-
+  std::pair<unsigned int, unsigned int>
+  PenaltyContact::own_candidates(const unsigned int n) const
+  {
+    return candidate_block(n, Utilities::MPI::this_mpi_process(mpi_communicator));
+  }
 
 
 
@@ -985,10 +988,9 @@ namespace WheelRail
     displs.resize(n_ranks);
     for (unsigned int r = 0; r < n_ranks; ++r)
       {
-        const unsigned int first = static_cast<unsigned long>(n) * r / n_ranks;
-        const unsigned int last  = static_cast<unsigned long>(n) * (r + 1) / n_ranks;
-        counts[r]                = 2 * (last - first);
-        displs[r]                = 2 * first;
+        const auto block = candidate_block(n, r);
+        counts[r]        = 2 * (block.second - block.first);
+        displs[r]        = 2 * block.first;
       }
     exchange_gaps.resize(2 * n);
     exchange_buffer.clear();

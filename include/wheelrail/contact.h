@@ -287,7 +287,10 @@ namespace WheelRail
     /** The candidate faces at each contact node (after a search or load). */
     void
     build_normal_adjacency();
-    /** The candidates [first, second) of @p n that this rank computes. */
+    /** The candidates [first, second) of @p n that rank @p rank computes. */
+    std::pair<unsigned int, unsigned int>
+    candidate_block(const unsigned int n, const unsigned int rank) const;
+    /** candidate_block() of this rank. */
     std::pair<unsigned int, unsigned int>
     own_candidates(const unsigned int n) const;
     void
