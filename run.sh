@@ -70,7 +70,7 @@ run_bench() {
   mkdir -p bench
   local csv=bench/results.csv
   if [ ! -f "$csv" ]; then
-    echo "date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h" > "$csv"
+    echo "date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms" > "$csv"
   fi
   local commit cpu
   commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)

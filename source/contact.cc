@@ -5,6 +5,7 @@
 #include <boost/geometry/index/rtree.hpp>
 
 #include <wheelrail/contact.h>
+#include <wheelrail/stopwatch.h>
 
 #include <algorithm>
 #include <cmath>
@@ -356,6 +357,12 @@ namespace WheelRail
     evaluation = 0;
     node_x        = node_X;
     node_x_search = node_X;
+    std::vector<unsigned int> all(node_dof.size());
+    for (unsigned int n = 0; n < all.size(); ++n)
+      all[n] = n;
+    plan_gather(all, all_gather);
+    active_nodes.clear();
+    plan_gather(active_nodes, active_gather);
     need_search   = true;
     dissipation   = 0;
     damping_loss  = 0;
@@ -366,23 +373,70 @@ namespace WheelRail
 
 
   void
-  PenaltyContact::gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
-                                   const std::vector<unsigned int> &                 nodes)
+  PenaltyContact::plan_gather(const std::vector<unsigned int> &nodes, GatherPlan &plan)
   {
-    std::vector<double> &send = gather_send;
-    send.clear();
+    // this rank's nodes in the order of their DoFs: the reads of u in
+    // gather_positions() go forward through memory
+    std::vector<std::pair<unsigned int, unsigned int>> owned; // (local DoF, node)
     for (const unsigned int n : nodes)
       if (partitioner->in_local_range(node_dof[n]))
-        {
-          const unsigned int i = partitioner->global_to_local(node_dof[n]);
-          send.push_back(n);
-          for (unsigned int d = 0; d < dim; ++d)
-            send.push_back(node_X[n][d] + u.local_element(i + d));
-        }
-    std::vector<double> &recv = gather_recv;
-    all_gather_concatenated(send, MPI_DOUBLE, recv);
-    for (unsigned int i = 0; i < recv.size(); i += 4)
-      node_x[static_cast<unsigned int>(recv[i])] = Point<dim>(recv[i + 1], recv[i + 2], recv[i + 3]);
+        owned.emplace_back(partitioner->global_to_local(node_dof[n]), n);
+    std::sort(owned.begin(), owned.end());
+    plan.local_dof.resize(owned.size());
+    plan.X.resize(owned.size());
+    std::vector<unsigned int> own_nodes(owned.size());
+    for (unsigned int k = 0; k < owned.size(); ++k)
+      {
+        plan.local_dof[k] = owned[k].first;
+        plan.X[k]         = node_X[owned[k].second];
+        own_nodes[k]      = owned[k].second;
+      }
+    // the nodes in the order the positions arrive: all ranks' lists
+    // concatenated (what every rank sends is fixed until the next plan)
+    all_gather_concatenated(own_nodes, MPI_UNSIGNED, plan.nodes);
+    const int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    plan.counts.resize(n_ranks);
+    plan.displs.resize(n_ranks);
+    for (int r = 0; r < n_ranks; ++r)
+      {
+        plan.counts[r] = dim * exchange_counts[r];
+        plan.displs[r] = dim * exchange_displs[r];
+      }
+  }
+
+
+
+  void
+  PenaltyContact::gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
+                                   const GatherPlan &                                plan)
+  {
+    // x = X + u of the owned nodes; u is read at scattered places (the
+    // contact nodes among all the mesh's), each read a likely cache miss:
+    // requested a few nodes ahead, the misses overlap
+    constexpr unsigned int ahead = 16;
+    const unsigned int     n_own = plan.local_dof.size();
+    const double *         U     = u.begin();
+    std::vector<double> &  send  = gather_send;
+    send.resize(dim * n_own);
+    for (unsigned int k = 0; k < n_own; ++k)
+      {
+        if (k + ahead < n_own)
+          __builtin_prefetch(U + plan.local_dof[k + ahead], 0, 0);
+        for (unsigned int d = 0; d < dim; ++d)
+          send[dim * k + d] = plan.X[k][d] + U[plan.local_dof[k] + d];
+      }
+    const double *x = send.data();
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      {
+        gather_recv.resize(dim * plan.nodes.size());
+        const int ierr = MPI_Allgatherv(send.data(), send.size(), MPI_DOUBLE, gather_recv.data(),
+                                        plan.counts.data(), plan.displs.data(), MPI_DOUBLE,
+                                        mpi_communicator);
+        AssertThrowMPI(ierr);
+        x = gather_recv.data();
+      }
+    for (unsigned int k = 0; k < plan.nodes.size(); ++k)
+      node_x[plan.nodes[k]] = Point<dim>(x[dim * k], x[dim * k + 1], x[dim * k + 2]);
   }
 
 
@@ -414,10 +468,7 @@ namespace WheelRail
   PenaltyContact::search(const LinearAlgebra::distributed::Vector<double> &u)
   {
     Timer timer;
-    std::vector<unsigned int> all(node_dof.size());
-    for (unsigned int i = 0; i < all.size(); ++i)
-      all[i] = i;
-    gather_positions(u, all);
+    gather_positions(u, all_gather);
     node_x_search = node_x;
 
     const double margin = prm.search_margin;
@@ -524,6 +575,7 @@ namespace WheelRail
     for (unsigned int n = 0; n < active.size(); ++n)
       if (active[n])
         active_nodes.push_back(n);
+    plan_gather(active_nodes, active_gather);
     build_normal_adjacency();
     need_search        = false;
     steps_since_search = 0;
@@ -720,10 +772,25 @@ namespace WheelRail
                              const bool                                        advance,
                              LinearAlgebra::distributed::Vector<double> &      f)
   {
+    Clock::time_point clock = Clock::now();
     if (need_search || steps_since_search >= prm.search_interval)
-      search(u);
+      {
+        search(u);
+        timing.search += lap(clock);
+      }
     else
-      gather_positions(u, active_nodes);
+      {
+        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+          {
+            // the ranks meet here first after their element loops: what
+            // one waits for the other is the imbalance, timed on its own
+            const int ierr = MPI_Barrier(mpi_communicator);
+            AssertThrowMPI(ierr);
+            timing.wait += lap(clock);
+          }
+        gather_positions(u, active_gather);
+        timing.positions += lap(clock);
+      }
 
     // rebuild at the next step when a candidate moved too far
     const double limit = prm.rebuild_fraction * prm.search_margin;
@@ -744,8 +811,12 @@ namespace WheelRail
     for (Pass &pass : passes)
       {
         compute_slaves(pass, dt, advance);
+        timing.slaves += lap(clock);
         if (n_ranks > 1)
-          exchange_states(pass, advance);
+          {
+            exchange_states(pass, advance);
+            timing.exchange += lap(clock);
+          }
       }
     pairs.clear();
     totals = ContactSummary();
@@ -783,6 +854,7 @@ namespace WheelRail
         }
     if (advance)
       ++steps_since_search;
+    timing.forces += lap(clock);
   }
 
 
@@ -1150,5 +1222,6 @@ namespace WheelRail
     in.pod(need_search);
     in.pod(searches);
     build_normal_adjacency();
+    plan_gather(active_nodes, active_gather);
   }
 } // namespace WheelRail

@@ -9,8 +9,8 @@
 
 #include <wheelrail/explicit_solver.h>
 
-#include <chrono>
 #include <wheelrail/geometry.h>
+#include <wheelrail/stopwatch.h>
 
 #include <algorithm>
 #include <array>
@@ -268,20 +268,6 @@ namespace WheelRail
         for (unsigned int i = 0; i < 3; ++i)
           for (unsigned int j = 0; j < 3; ++j)
             H[i][j] += U[nodes[a * W + l] + i] * data[(Field::b + a * 3 + j) * W + l];
-    }
-
-
-
-    using Clock = std::chrono::steady_clock;
-
-    /** Seconds since @p t0; sets @p t0 to now. */
-    inline double
-    lap(Clock::time_point &t0)
-    {
-      const Clock::time_point t1 = Clock::now();
-      const double            s  = std::chrono::duration<double>(t1 - t0).count();
-      t0                         = t1;
-      return s;
     }
 
 

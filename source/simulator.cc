@@ -1011,9 +1011,10 @@ namespace WheelRail
 
 
   void
-  Simulator::report_timing(const double wall_seconds,
-                           const double output_seconds,
-                           const unsigned long n_steps) const
+  Simulator::report_timing(const double         wall_seconds,
+                           const double         output_seconds,
+                           const unsigned long  n_steps,
+                           std::vector<double> &step_seconds) const
   {
     const StepTimes &t     = solver->step_times();
     const double     cells = triangulation.n_global_active_cells();
@@ -1057,8 +1058,47 @@ namespace WheelRail
         for (unsigned int i = 0; i < 6; ++i)
           pcout << " " << names[i] << " " << fmt(fastest[i], 4);
       }
-    pcout << std::endl
-          << "  peak memory per rank " << fmt(peak_mb, 5) << " MB" << std::endl
+    pcout << std::endl;
+    if (contact)
+      {
+        // the contact's parts, slowest and fastest rank (with one rank the
+        // same): where the contact time goes and what does not scale
+        const ContactTimes &c           = contact->times();
+        const double parts[6] = {c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces};
+        const char * part_names[6] = {"search", "wait", "positions", "slaves", "exchange", "forces"};
+        double       most[6], least[6];
+        Utilities::MPI::max(ArrayView<const double>(parts, 6),
+                            mpi_communicator,
+                            ArrayView<double>(most, 6));
+        Utilities::MPI::min(ArrayView<const double>(parts, 6),
+                            mpi_communicator,
+                            ArrayView<double>(least, 6));
+        pcout << "  contact split (slowest / fastest rank, s):";
+        for (unsigned int i = 0; i < 6; ++i)
+          pcout << " " << part_names[i] << " " << fmt(most[i], 3) << " / " << fmt(least[i], 3);
+        pcout << std::endl;
+      }
+    // The wall time of single steps (this machine's noise: on a shared
+    // host the same step's time varies by tens of per cent, and with
+    // several ranks each step waits for the slowest): fastest, median and
+    // 95th percentile, each the largest over the ranks, in ms
+    double spread[3] = {0, 0, 0};
+    if (!step_seconds.empty())
+      {
+        const auto at = [&](const double q) {
+          const std::size_t k = std::min<std::size_t>(step_seconds.size() - 1,
+                                                      q * step_seconds.size());
+          std::nth_element(step_seconds.begin(), step_seconds.begin() + k, step_seconds.end());
+          return 1e3 * step_seconds[k];
+        };
+        const double local[3] = {at(0.), at(0.5), at(0.95)};
+        Utilities::MPI::max(ArrayView<const double>(local, 3),
+                            mpi_communicator,
+                            ArrayView<double>(spread, 3));
+        pcout << "  step wall time (ms): fastest " << fmt(spread[0], 4) << ", median "
+              << fmt(spread[1], 4) << ", 95th percentile " << fmt(spread[2], 4) << std::endl;
+      }
+    pcout << "  peak memory per rank " << fmt(peak_mb, 5) << " MB" << std::endl
           << "  the paper's full run (" << fmt(full_steps, 6) << " steps of 2.6e-8 s) at this rate on "
           << fmt(cells, 8) << " cells: " << fmt(full_hours, 3) << " h" << std::endl;
 
@@ -1066,12 +1106,16 @@ namespace WheelRail
     csv << "# wheelrail timing: wall seconds of the timed steps (slowest rank), ns per element-step "
            "(wall), peak resident memory per rank (largest) in MB\n"
         << "ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,"
-           "communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h\n"
+           "communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,"
+           "fastest_step_ms,median_step_ms,p95_step_ms\n"
         << n_ranks << "," << cells << "," << solver->get_dof_handler().n_dofs() << "," << n_steps
         << "," << wall << "," << ns;
     for (unsigned int i = 0; i < 6; ++i)
       csv << "," << slowest[i];
-    csv << "," << peak_mb << "," << full_hours << "\n";
+    csv << "," << peak_mb << "," << full_hours;
+    for (unsigned int i = 0; i < 3; ++i)
+      csv << "," << spread[i];
+    csv << "\n";
     write_file("timing.csv", csv.str());
   }
 
@@ -1366,6 +1410,7 @@ namespace WheelRail
     using Clock                        = std::chrono::steady_clock;
     Clock::time_point timed_start      = Clock::now();
     double            output_seconds   = 0;
+    std::vector<double> step_seconds; // of the timed steps, for their spread
     const unsigned long warmup =
       std::min<unsigned long>(first_step + op.timing_warmup_steps, n_steps);
     for (unsigned long n = first_step; n < n_steps; ++n)
@@ -1373,14 +1418,19 @@ namespace WheelRail
         if (n == warmup)
           {
             solver->reset_times();
+            if (contact)
+              contact->reset_times();
             output_seconds = 0;
             timed_start    = Clock::now();
           }
         const bool report_step = (n % op.report_interval == 0);
         const bool stats_step  = (n % op.statistics_interval == 0) || report_step;
         Energies   e;
+        const Clock::time_point step_start = Clock::now();
         solver->step(stats_step ? &e : nullptr);
         const Clock::time_point output_start = Clock::now();
+        if (n >= warmup)
+          step_seconds.push_back(std::chrono::duration<double>(output_start - step_start).count());
         record_probe();
         if (contact)
           {
@@ -1467,7 +1517,7 @@ namespace WheelRail
                      4)
               << " ns per element-step per rank (" << fmt(timer.wall_time() / (cells * n_steps) * 1e9, 4)
               << " ns wall)" << std::endl;
-        report_timing(timed_seconds, output_seconds, n_steps - warmup);
+        report_timing(timed_seconds, output_seconds, n_steps - warmup, step_seconds);
         if (contact)
           pcout << "  contact: " << contact->n_searches() << " candidate searches, "
                 << fmt(contact->search_seconds() / std::max(1u, contact->n_searches()) * 1e3, 3)

@@ -108,6 +108,17 @@ namespace WheelRail
     Tensor<1, dim> relative_displacement;
   };
 
+  /** Wall seconds of this rank in the parts of PenaltyContact::add_forces(). */
+  struct ContactTimes
+  {
+    double search    = 0; ///< candidate searches (their position gather included)
+    double wait      = 0; ///< for the other ranks before the position gather (imbalance)
+    double positions = 0; ///< position gather of the candidates between searches
+    double slaves    = 0; ///< closest points, penalty and friction of this rank's block
+    double exchange  = 0; ///< the blocks' states to every rank
+    double forces    = 0; ///< totals, pairs and the nodal forces
+  };
+
   /**
    * Penalty contact between the slave boundary and the master boundary
    * (and back, with two-pass contact).
@@ -208,6 +219,17 @@ namespace WheelRail
     {
       return search_time;
     }
+    /** Times of the calls since the last reset_times(). */
+    const ContactTimes &
+    times() const
+    {
+      return timing;
+    }
+    void
+    reset_times()
+    {
+      timing = ContactTimes();
+    }
     /** h_ref of Contact/Penalty stiffness = area [m] (0 with 'segment'). */
     double
     penalty_reference_length() const
@@ -293,9 +315,20 @@ namespace WheelRail
     /** candidate_block() of this rank. */
     std::pair<unsigned int, unsigned int>
     own_candidates(const unsigned int n) const;
+    /** What gather_positions() sends and receives for a set of nodes:
+     *  fixed from one search to the next. */
+    struct GatherPlan
+    {
+      std::vector<unsigned int> local_dof; ///< this rank's nodes: first local DoF, ascending
+      std::vector<Point<dim>>   X;         ///< their reference positions
+      std::vector<unsigned int> nodes;     ///< all ranks' nodes in the order they arrive
+      std::vector<int>          counts, displs; ///< per rank, in doubles
+    };
     void
-    gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
-                     const std::vector<unsigned int> &                 nodes);
+    plan_gather(const std::vector<unsigned int> &nodes, GatherPlan &plan);
+    /** node_x = X + u of the plan's nodes on every rank. */
+    void
+    gather_positions(const LinearAlgebra::distributed::Vector<double> &u, const GatherPlan &plan);
     /** Closest point, penalty force and friction of this rank's share of
      *  the candidate slaves of @p pass (a block): their states only. */
     void
@@ -331,6 +364,7 @@ namespace WheelRail
     unsigned long                        evaluation = 0; ///< add_forces() calls
     std::vector<double>                  node_area;   ///< master tributary area (first pass)
     std::vector<unsigned int>            active_nodes;  ///< gathered every step
+    GatherPlan                           all_gather, active_gather;
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
@@ -348,6 +382,7 @@ namespace WheelRail
     bool                     need_search        = true;
     unsigned int             searches           = 0;
     double                   search_time        = 0;
+    ContactTimes             timing;
   };
 } // namespace WheelRail
 

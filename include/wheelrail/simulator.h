@@ -83,11 +83,13 @@ namespace WheelRail
     /** Where and why a run diverged (all ranks call it). */
     std::string
     divergence_message(const unsigned long n, const Energies &e) const;
-    /** Time split, ns per element-step, peak memory and the projected
-     *  full paper run: on the screen and in timing.csv. */
+    /** Time split, ns per element-step, the spread of the step times
+     *  (@p step_seconds: this rank's timed steps, reordered here), peak
+     *  memory and the projected full paper run: on the screen and in
+     *  timing.csv. */
     void
     report_timing(const double wall_seconds, const double output_seconds,
-                  const unsigned long n_steps) const;
+                  const unsigned long n_steps, std::vector<double> &step_seconds) const;
     void
     add_statistics_row(const Energies &e);
     void
