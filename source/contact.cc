@@ -773,6 +773,15 @@ namespace WheelRail
                              LinearAlgebra::distributed::Vector<double> &      f)
   {
     Clock::time_point clock = Clock::now();
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      {
+        // the ranks meet here first after their element loops: what one
+        // waits for the other (imbalance, and the noise of single steps)
+        // is timed on its own
+        const int ierr = MPI_Barrier(mpi_communicator);
+        AssertThrowMPI(ierr);
+        timing.wait += lap(clock);
+      }
     if (need_search || steps_since_search >= prm.search_interval)
       {
         search(u);
@@ -780,14 +789,6 @@ namespace WheelRail
       }
     else
       {
-        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
-          {
-            // the ranks meet here first after their element loops: what
-            // one waits for the other is the imbalance, timed on its own
-            const int ierr = MPI_Barrier(mpi_communicator);
-            AssertThrowMPI(ierr);
-            timing.wait += lap(clock);
-          }
         gather_positions(u, active_gather);
         timing.positions += lap(clock);
       }
@@ -844,11 +845,7 @@ namespace WheelRail
           add(node_dof[pass.slave_node[s]], 1.);
           const MasterFace &face = pass.faces[state.face];
           double            N[4];
-          Point<dim>        x;
-          Tensor<1, dim>    dxi, deta;
-          BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
-                                &node_x[face.node[2]], &node_x[face.node[3]]}};
-          bf.evaluate(state.xi, state.eta, x, dxi, deta, N);
+          BilinearFace::shape(state.xi, state.eta, N);
           for (unsigned int v = 0; v < 4; ++v)
             add(node_dof[face.node[v]], -N[v]);
         }
