@@ -339,6 +339,7 @@ namespace WheelRail
 
     for (VectorType *vec : {&u, &v, &f, &v_old, &mass, &inv_mass, &f_ext, &u0})
       vec->reinit(vector_partitioner);
+    f_cleared = false;
 
     setup_cell_data();
     setup_mass_and_loads();
@@ -941,10 +942,18 @@ namespace WheelRail
                                   const VectorType *v_in,
                                   VectorType &      f_out,
                                   const bool        with_contact,
-                                  const bool        advance)
+                                  const bool        advance,
+                                  const bool        f_is_zero)
   {
     Clock::time_point clock = Clock::now();
-    f_out = 0.;
+    if (!f_is_zero)
+      f_out = 0.;
+    else
+      Assert(std::all_of(f_out.begin(),
+                         f_out.begin() + f_out.locally_owned_size() +
+                           f_out.get_partitioner()->n_ghost_indices(),
+                         [](const double x) { return x == 0; }),
+             ExcInternalError());
     const double *U = u_in.begin();
     const double *V = v_in ? v_in->begin() : nullptr;
     double *      F = f_out.begin();
@@ -1201,7 +1210,7 @@ namespace WheelRail
       }
 
     const bool   damping = prm.solver.damping_model != "none";
-    const double power   = assemble_forces(u, damping ? &v : nullptr, f, true, true);
+    const double power   = assemble_forces(u, damping ? &v : nullptr, f, true, true, f_cleared);
     clock                = Clock::now();
 
     // applied forces at t_n (enter f with the sign of internal forces)
@@ -1222,8 +1231,17 @@ namespace WheelRail
     // is added below)
     for (const auto &[i, d, w] : applied)
       work_step += 0.5 * h * w * applied_total[d] * V[i];
-    const double *     F = f.begin();
+    double *           F = f.begin();
     const double *     G = f_ext.begin();
+    // the net forces that the prescribed DoFs and the axle need after the
+    // update, which clears f behind itself (f = 0 for the next step's
+    // assembly without a pass of its own over the vector)
+    for (auto &p : prescribed)
+      {
+        const unsigned int n_components = (p.kind == 3 && p.component == 0) ? 3 : 1;
+        for (unsigned int c = 0; c < n_components; ++c)
+          p.net_force[c] = G[p.index + c] - F[p.index + c];
+      }
     const double *     IM = inv_mass.begin();
     const double *     M  = mass.begin();
     const unsigned int n  = u.locally_owned_size();
@@ -1235,6 +1253,7 @@ namespace WheelRail
           {
             V[i] += h * IM[i] * (G[i] - F[i]);
             U[i] += dt * V[i];
+            F[i] = 0;
           }
       }
     else
@@ -1244,12 +1263,14 @@ namespace WheelRail
             const double vo = V[i];
             V[i] += h * IM[i] * (G[i] - F[i]);
             U[i] += dt * V[i];
+            F[i] = 0;
             const double va = first ? vo : 0.5 * (vo + V[i]);
             if (IM[i] > 0)
               ke += 0.5 * M[i] * va * va;
           }
       }
 
+    f_cleared = true;
     for (const auto &[i, d, w] : applied)
       work_step += 0.5 * h * w * applied_total[d] * V[i];
 
@@ -1262,8 +1283,8 @@ namespace WheelRail
         for (const auto &p : prescribed)
           if (p.kind == 3 && p.component == 0)
             {
-              const unsigned int i = p.index;
-              const double       fx = G[i] - F[i], fy = G[i + 1] - F[i + 1], fz = G[i + 2] - F[i + 2];
+              const unsigned int i  = p.index;
+              const double       fx = p.net_force[0], fy = p.net_force[1], fz = p.net_force[2];
               const double       rx = node_points[i][0] + U[i] - axle[0];
               const double       rz = node_points[i][2] + U[i + 2] - axle[2];
               local[0] += fx;
@@ -1304,7 +1325,7 @@ namespace WheelRail
         // (the rigid axle's bore nodes are part of the wheelset's balance)
         if (p.kind != 3)
           {
-            const double r = M[p.index] * (v_new - p.v_prev) / h - (G[p.index] - F[p.index]);
+            const double r = M[p.index] * (v_new - p.v_prev) / h - p.net_force[0];
             work_step += r * h * 0.5 * (p.v_prev + v_new);
           }
         const double va = first ? p.v_prev : 0.5 * (p.v_prev + v_new);

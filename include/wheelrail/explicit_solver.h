@@ -310,13 +310,16 @@ namespace WheelRail
     void
     setup_prescribed_dofs();
     /** f = f_int(u) + f_damp(v) - f_contact(u); returns the damping power.
-     *  Contact is evaluated for a step (friction advanced) if @p advance. */
+     *  Contact is evaluated for a step (friction advanced) if @p advance.
+     *  With @p f_is_zero the caller guarantees f = 0 already (owned and
+     *  ghost entries), and the pass that would zero it is left out. */
     double
     assemble_forces(const VectorType &u,
                     const VectorType *v,
                     VectorType &      f,
                     const bool        with_contact,
-                    const bool        advance);
+                    const bool        advance,
+                    const bool        f_is_zero = false);
     /** Request the element data of @p batch into the cache. */
     void
     prefetch_batch(const unsigned int batch) const;
@@ -381,6 +384,10 @@ namespace WheelRail
       unsigned int kind; ///< 0 fixed, 1 velocity function, 2 spinning axle, 3 rigid axle
       double       u_prev = 0; ///< u at the start of the step
       double       v_prev = 0; ///< v at the previous half step
+      /** f_ext - f at this DoF (and, for the x-DoF of a rigid-axle bore
+       *  node, at its y- and z-DoFs) in the current step: taken before
+       *  the update clears f. */
+      double net_force[3] = {0, 0, 0};
     };
     std::vector<PrescribedDof>            prescribed;
     std::unique_ptr<Function<dim>>        prescribed_velocity;
@@ -391,6 +398,9 @@ namespace WheelRail
     Wheelset *                                                  wheelset = nullptr;
 
     VectorType u, v, f, v_old;
+    /** f is zero (the update of the last step cleared it behind itself:
+     *  the next step's assembly need not). */
+    bool f_cleared = false;
     double     t          = 0;
     double     dt         = 0;
     double     stable_dt  = 0;
