@@ -969,6 +969,17 @@ namespace WheelRail
     data_out.add_data_vector(material, "material_id", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);
     data_out.build_patches();
+    // zlib level: deal.II's default, best compression, spends about 3 s
+    // more per snapshot of the paper mesh than the fastest level (as long
+    // as 100 explicit steps), for files about 25-35 % smaller
+    DataOutBase::VtkFlags flags;
+    flags.time              = solver->time();
+    flags.cycle             = vtu_counter;
+    const std::string &level = parameters.output.vtu_compression;
+    flags.compression_level  = level == "best" ? DataOutBase::VtkFlags::best_compression :
+                               level == "none" ? DataOutBase::VtkFlags::no_compression :
+                                                 DataOutBase::VtkFlags::best_speed;
+    data_out.set_flags(flags);
     const std::string name = data_out.write_vtu_with_pvtu_record(
       output_directory + "/", "solution", vtu_counter++, mpi_communicator, 5);
     vtu_records.emplace_back(solver->time(), name);

@@ -236,6 +236,7 @@ namespace WheelRail
     unsigned int report_interval;
     unsigned int statistics_interval;
     unsigned int vtu_interval;
+    std::string  vtu_compression; ///< "fast", "best" or "none"
     Point<3>     probe_point;
     unsigned int probe_component;
     unsigned int timing_warmup_steps;
