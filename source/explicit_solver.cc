@@ -72,6 +72,47 @@ namespace WheelRail
       __builtin_memcpy(p, &x, sizeof(x));
     }
 
+    /**
+     * Families: when a batch holds the 8 children of one parent in child
+     * order, vertex a of lane (child) l is node family_offset[a] +
+     * family_offset[l] of the parent's 3x3x3 grid (lexicographic vertex and
+     * child numbering of deal.II), 27 distinct nodes instead of 64.
+     */
+    constexpr unsigned int family_offset[8] = {0, 1, 3, 4, 9, 10, 12, 13};
+    typedef long long v8i __attribute__((vector_size(64)));
+    /** Lane l of the vector of vertex a over the children: grid node
+     *  family_offset[a] + family_offset[l], i.e. element family_offset[l] of
+     *  the 16 grid values from family_offset[a] on. */
+    constexpr v8i family_lanes = {0, 1, 3, 4, 9, 10, 12, 13};
+
+    /** Per grid node, the (vertex, lane) pairs that reach it as offsets
+     *  a * 3 W + l into a [vertex][component][lane] array, by ascending a:
+     *  the order in which the general scatter adds them. */
+    struct FamilyScatter
+    {
+      unsigned char start[28];
+      unsigned char entry[64];
+      FamilyScatter()
+        : start{}
+        , entry{}
+      {
+        unsigned int count[27] = {};
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < W; ++l)
+            ++count[family_offset[a] + family_offset[l]];
+        start[0] = 0;
+        for (unsigned int n = 0; n < 27; ++n)
+          start[n + 1] = start[n] + count[n];
+        unsigned int next[27];
+        for (unsigned int n = 0; n < 27; ++n)
+          next[n] = start[n];
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < W; ++l)
+            entry[next[family_offset[a] + family_offset[l]]++] = a * 3 * W + l;
+      }
+    };
+    const FamilyScatter family_scatter;
+
     /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
      *  of a batch: H from the displacements, L from the velocities. */
     inline void
@@ -459,12 +500,41 @@ namespace WheelRail
     double min_edge = std::numeric_limits<double>::max(), min_size = min_edge,
            min_le = min_edge, min_jac = min_edge, max_aspect = 0, min_dt = min_edge;
 
-    unsigned int c = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
+    // Cell order: first the families, the 8 children of a parent that are
+    // all active and locally owned, in child order and in the order of
+    // their first child, so that each fills one batch (see family_offset:
+    // 27 nodes to gather and scatter instead of 64); then the other cells
+    // in the triangulation's order.
+    std::vector<DoFHandler<dim>::active_cell_iterator> cells;
+    cells.reserve(n_cells);
+    {
+      std::vector<bool> taken(triangulation.n_active_cells(), false);
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && cell->level() > 0)
+          {
+            const auto parent = cell->parent();
+            if (parent->child(0) != cell || parent->n_children() != 8)
+              continue;
+            bool family = true;
+            for (unsigned int i = 0; i < 8 && family; ++i)
+              family = parent->child(i)->is_active() && parent->child(i)->is_locally_owned();
+            if (family)
+              for (unsigned int i = 0; i < 8; ++i)
+                {
+                  cells.emplace_back(parent->child(i));
+                  taken[parent->child(i)->active_cell_index()] = true;
+                }
+          }
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned() && !taken[cell->active_cell_index()])
+          cells.push_back(cell);
+      AssertThrow(cells.size() == n_cells, ExcInternalError());
+    }
+
+    for (unsigned int c = 0; c < n_cells; ++c)
         {
+          const auto &       cell  = cells[c];
           const unsigned int batch = c / W, lane = c % W;
-          ++c;
           double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
           fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(cell));
           cell->get_dof_indices(dofs);
@@ -556,6 +626,37 @@ namespace WheelRail
           batch_cell_index[std::size_t(batch) * W + lane] = cell->active_cell_index();
           batch_material[std::size_t(batch) * W + lane]   = cell->material_id();
         }
+
+    // Batches that are families (see family_offset): the node map of all
+    // 64 (vertex, lane) pairs must be that of the parent's grid. Checked on
+    // the node indices alone, so any batch that passes is exact to gather
+    // and scatter through the grid.
+    batch_family.assign(n_batches, numbers::invalid_unsigned_int);
+    family_nodes.clear();
+    for (unsigned int b = 0; b < n_batches; ++b)
+      {
+        if (n_cells - b * W < W)
+          continue;
+        unsigned int grid[27];
+        std::fill(std::begin(grid), std::end(grid), numbers::invalid_unsigned_int);
+        bool family = true;
+        for (unsigned int a = 0; a < 8 && family; ++a)
+          for (unsigned int l = 0; l < W && family; ++l)
+            {
+              const unsigned int idx = batch_nodes[(std::size_t(b) * 8 + a) * W + l];
+              unsigned int &     g   = grid[family_offset[a] + family_offset[l]];
+              if (g == numbers::invalid_unsigned_int)
+                g = idx;
+              else
+                family = (g == idx);
+            }
+        if (family)
+          {
+            batch_family[b] = family_nodes.size() / 27;
+            family_nodes.insert(family_nodes.end(), std::begin(grid), std::end(grid));
+          }
+      }
+    family_nodes.shrink_to_fit();
     // padding lanes point at node 0 with zero volume: they produce zero force
     // and are never scattered
 
@@ -583,13 +684,16 @@ namespace WheelRail
     FEValues<dim> fe_values(fe_scalar, quadrature, update_values | update_JxW_values);
 
     mass = 0;
-    // row-sum lumping rho int N_a dV, cell by cell
-    unsigned int c = 0;
+    // row-sum lumping rho int N_a dV, cell by cell in the triangulation's
+    // order (not the batches'), each cell's nodes from its batch slot
+    std::vector<unsigned int> slot(triangulation.n_active_cells(), numbers::invalid_unsigned_int);
+    for (unsigned int c = 0; c < n_cells; ++c)
+      slot[batch_cell_index[c]] = c;
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const unsigned int batch = c / W, lane = c % W;
-          ++c;
+          const unsigned int batch = slot[cell->active_cell_index()] / W,
+                             lane  = slot[cell->active_cell_index()] % W;
           fe_values.reinit(cell);
           for (unsigned int a = 0; a < 8; ++a)
             {
@@ -961,6 +1065,9 @@ namespace WheelRail
 
     alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
     std::fill(std::begin(vb), std::end(vb), 0.);
+    // a family's grid values per component, padded: the permutations read
+    // 16 values from any vertex's offset (at most 13 + 15 = 28)
+    alignas(64) double ug[3][32] = {}, vg[3][32] = {};
     double power = 0;
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
@@ -968,18 +1075,67 @@ namespace WheelRail
         const double *      data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
         if (batch + prefetch_distance < n_batches)
           prefetch_batch(batch + prefetch_distance);
-        for (unsigned int a = 0; a < 8; ++a)
-          for (unsigned int l = 0; l < W; ++l)
-            {
-              const unsigned int idx = nodes[a * W + l];
-              for (unsigned int d = 0; d < 3; ++d)
-                ub[(a * 3 + d) * W + l] = U[idx + d];
-              if (damping)
+        const unsigned int family = batch_family[batch];
+        if (family != numbers::invalid_unsigned_int)
+          {
+            // the 27 grid nodes once, then each vertex's vector over the
+            // children by one two-source permutation of the grid values
+            const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+            for (unsigned int n = 0; n < 27; ++n)
+              {
+                const unsigned int idx = grid[n];
                 for (unsigned int d = 0; d < 3; ++d)
-                  vb[(a * 3 + d) * W + l] = V[idx + d];
-            }
+                  ug[d][n] = U[idx + d];
+                if (damping)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    vg[d][n] = V[idx + d];
+              }
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const unsigned int o = family_offset[a];
+                  store(&ub[(a * 3 + d) * W],
+                        __builtin_shuffle(WheelRail::load(&ug[d][o]), WheelRail::load(&ug[d][o + W]), family_lanes));
+                  if (damping)
+                    store(&vb[(a * 3 + d) * W],
+                          __builtin_shuffle(WheelRail::load(&vg[d][o]), WheelRail::load(&vg[d][o + W]), family_lanes));
+                }
+          }
+        else
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int l = 0; l < W; ++l)
+              {
+                const unsigned int idx = nodes[a * W + l];
+                for (unsigned int d = 0; d < 3; ++d)
+                  ub[(a * 3 + d) * W + l] = U[idx + d];
+                if (damping)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    vb[(a * 3 + d) * W + l] = V[idx + d];
+              }
         power += damping ? batch_forces<true>(data, lame_lambda, lame_mu, ub, vb, fb) :
                            batch_forces<false>(data, lame_lambda, lame_mu, ub, vb, fb);
+        if (family != numbers::invalid_unsigned_int)
+          {
+            // each grid node's sum in a register, its terms in the order
+            // of the general scatter below (ascending vertex): the same bits
+            const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+            for (unsigned int n = 0; n < 27; ++n)
+              {
+                const unsigned int idx = grid[n];
+                double             f0 = F[idx], f1 = F[idx + 1], f2 = F[idx + 2];
+                for (unsigned int e = family_scatter.start[n]; e < family_scatter.start[n + 1]; ++e)
+                  {
+                    const double *fe = &fb[family_scatter.entry[e]];
+                    f0 += fe[0];
+                    f1 += fe[W];
+                    f2 += fe[2 * W];
+                  }
+                F[idx]     = f0;
+                F[idx + 1] = f1;
+                F[idx + 2] = f2;
+              }
+            continue;
+          }
         const unsigned int n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int a = 0; a < 8; ++a)
           for (unsigned int l = 0; l < n_valid; ++l)

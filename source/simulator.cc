@@ -1058,6 +1058,11 @@ namespace WheelRail
           << solver->get_dof_handler().n_dofs() << " DoFs:" << std::endl
           << "  wall " << fmt(wall, 4) << " s, " << fmt(ns, 4) << " ns per element-step (wall), "
           << fmt(ns * n_ranks, 4) << " ns per element-step per rank" << std::endl
+          << "  cells in family batches (8 children of one parent: 27 nodes gathered "
+             "and scattered, not 64): "
+          << Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator) << " ("
+          << fmt(100. * Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator) / cells, 3)
+          << " %)" << std::endl
           << "  split (slowest rank, s):";
     for (unsigned int i = 0; i < 6; ++i)
       pcout << " " << names[i] << " " << fmt(slowest[i], 4);

@@ -266,6 +266,13 @@ namespace WheelRail
     {
       return n_cells;
     }
+    /** Number of locally owned cells in family batches (8 children of one
+     *  parent, 27 nodes gathered and scattered instead of 64). */
+    unsigned int
+    n_family_cells() const
+    {
+      return 8 * (family_nodes.size() / 27);
+    }
     /** Reference position of the support point of local DoF index i. */
     const std::vector<Point<dim>> &
     support_points() const
@@ -360,6 +367,12 @@ namespace WheelRail
     AlignedVector<double>          batch_data;  ///< [batch][field][lane]
     std::vector<unsigned int>      batch_nodes; ///< [batch][vertex][lane]
     std::vector<unsigned int>      batch_cell_index; ///< active cell index
+    /** Batches whose 8 cells are the 8 children of one parent, in child
+     *  order (lane l = child l): their 27 distinct nodes, the x-DoF of each
+     *  in the parent's 3x3x3 lexicographic grid ([family][27]). */
+    std::vector<unsigned int> family_nodes;
+    /** Index into family_nodes / 27 of each batch, or invalid_unsigned_int. */
+    std::vector<unsigned int> batch_family;
     std::vector<types::material_id> batch_material;
     std::vector<double>            batch_kappa_ref; ///< hourglass stiffness with QM = 0.1
     double                         lame_lambda = 0; ///< of the one material [Pa]
