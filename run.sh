@@ -7,7 +7,8 @@
 #                               (default 2); --resume continues from its checkpoint
 #   ./run.sh bench [N ...]      same set-up, then the speed benchmark prm/bench_paper.prm
 #                               on 1 and 2 ranks (or the rank counts N given); figures
-#                               appended to bench/results.csv
+#                               appended to bench/results.csv, after the machine's
+#                               measured FMA peak and memory bandwidth
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
 #                               directory (and the comparison with a second run) into DIR/plots
 #   ./run.sh sweep BASE.prm [options]  traction sweep over mu_n and friction laws with its
@@ -76,6 +77,8 @@ run_bench() {
   commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
   git diff --quiet 2>/dev/null || commit="$commit+changes"
   cpu=$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -1 | tr -d ',')
+  # what the step is measured against: this machine's FMA peak and bandwidth
+  "$top/build/machine_limits"
   for np in "${counts[@]}"; do
     echo "run.sh: benchmark on $np rank(s)"
     if [ "$np" -gt 1 ]; then
@@ -121,7 +124,7 @@ case "$verb" in
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -139,7 +142,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac
