@@ -1047,6 +1047,8 @@ namespace WheelRail
       return m;
     }();
     const double peak_mb = Utilities::MPI::max(memory.VmHWM / 1024., mpi_communicator);
+    const unsigned int family_cells =
+      Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator);
     const double ns      = n_steps > 0 ? wall / (cells * n_steps) * 1e9 : 0.;
     // the paper's full run: 0.22 m of rolling at 2.6e-8 s
     const double full_steps = 0.22 / parameters.wheelset.rolling_speed / 2.6e-8;
@@ -1060,9 +1062,7 @@ namespace WheelRail
           << fmt(ns * n_ranks, 4) << " ns per element-step per rank" << std::endl
           << "  cells in family batches (8 children of one parent: 27 nodes gathered "
              "and scattered, not 64): "
-          << Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator) << " ("
-          << fmt(100. * Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator) / cells, 3)
-          << " %)" << std::endl
+          << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl
           << "  split (slowest rank, s):";
     for (unsigned int i = 0; i < 6; ++i)
       pcout << " " << names[i] << " " << fmt(slowest[i], 4);
