@@ -60,12 +60,10 @@ namespace
 #undef WHEELRAIL_FMA
     const v8d out[n_chains] = {r0,  r1,  r2,  r3,  r4,  r5,  r6,  r7,  r8,  r9,  r10, r11,
                                r12, r13, r14, r15, r16, r17, r18, r19, r20, r21, r22, r23};
-    for (unsigned int c = 0; c < n_chains; ++c)
-      acc[c] = out[c];
     double sum = 0;
     for (unsigned int c = 0; c < n_chains; ++c)
       for (unsigned int l = 0; l < 8; ++l)
-        sum += acc[c][l];
+        sum += out[c][l];
     return sum;
   }
 

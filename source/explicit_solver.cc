@@ -83,7 +83,9 @@ namespace WheelRail
     /** Lane l of the vector of vertex a over the children: grid node
      *  family_offset[a] + family_offset[l], i.e. element family_offset[l] of
      *  the 16 grid values from family_offset[a] on. */
-    constexpr v8i family_lanes = {0, 1, 3, 4, 9, 10, 12, 13};
+    constexpr v8i family_lanes = {family_offset[0], family_offset[1], family_offset[2],
+                                  family_offset[3], family_offset[4], family_offset[5],
+                                  family_offset[6], family_offset[7]};
 
     /** Per grid node, the (vertex, lane) pairs that reach it as offsets
      *  a * 3 W + l into a [vertex][component][lane] array, by ascending a:
