@@ -40,8 +40,12 @@ main(int argc, char **argv)
   const auto fail = [&](std::string message) {
     // name the input file as the user knows it, without its directory
     const std::string name = std::filesystem::path(input).filename().string();
-    for (std::size_t pos; !input.empty() && (pos = message.find(input)) != std::string::npos;)
-      message.replace(pos, input.size(), name);
+    // (searched from behind each replacement: a bare name in the working
+    // directory is its own replacement and would be found again forever)
+    if (!input.empty() && name != input)
+      for (std::size_t pos = 0; (pos = message.find(input, pos)) != std::string::npos;
+           pos += name.size())
+        message.replace(pos, input.size(), name);
     if (rank == 0 || ranks > 1)
       std::cerr << (ranks > 1 ? "[rank " + std::to_string(rank) + "] " : std::string())
                 << "Error: " << message << std::endl;

@@ -1,6 +1,10 @@
 // Runs wheelrail on a parameter file that must be rejected: prints its output
 // and exit status; exits 0 only if wheelrail failed with a non-zero status.
+// The file is copied into the working directory (the test's own directory in
+// the build tree) and named bare, as a user in the case's directory types it:
+// `wheelrail case.prm`.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <sys/wait.h>
@@ -10,7 +14,11 @@ main(int argc, char **argv)
 {
   if (argc != 2)
     return 2;
-  const std::string command = std::string(WHEELRAIL_EXECUTABLE) + " '" + argv[1] + "' 2>&1";
+  const std::filesystem::path source(argv[1]);
+  const std::filesystem::path name = source.filename();
+  std::filesystem::copy_file(source, name, std::filesystem::copy_options::overwrite_existing);
+  const std::string command =
+    std::string(WHEELRAIL_EXECUTABLE) + " '" + name.string() + "' 2>&1";
   FILE *pipe = popen(command.c_str(), "r");
   if (!pipe)
     return 2;
