@@ -15,6 +15,8 @@
 #include <wheelrail/geometry.h>
 #include <wheelrail/static_solver.h>
 
+#include <Teuchos_ParameterList.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -74,11 +76,69 @@ namespace WheelRail
     amg_data.elliptic              = true;
     amg_data.higher_order_elements = false;
     amg_data.smoother_sweeps       = 2;
-    amg_data.aggregation_threshold = 0.02;
-    std::vector<std::vector<bool>> modes;
-    DoFTools::extract_constant_modes(dof_handler, ComponentMask(), modes);
-    amg_data.constant_modes = modes;
-    amg.initialize(stiffness_matrix, amg_data);
+    if (parameters.statics.amg_null_space == "translations")
+      {
+        amg_data.aggregation_threshold = 0.02;
+        std::vector<std::vector<bool>> modes;
+        DoFTools::extract_constant_modes(dof_handler, ComponentMask(), modes);
+        amg_data.constant_modes = modes;
+        amg.initialize(stiffness_matrix, amg_data);
+      }
+    else
+      {
+        // The near null space of elasticity: the three translations and the
+        // three rotations from the nodes' positions (deal.II 9.4's
+        // AdditionalData takes constant modes only). Paper mesh, static start
+        // at A on 2 ranks: CG 1,178 -> 322 iterations, 172 -> 70-85 s; peak
+        // 1,797 -> 2,456 MB per rank (threshold 0.02: 741 iterations, 136 s,
+        // 2,703 MB).
+        amg_data.aggregation_threshold = 1e-4;
+        Teuchos::ParameterList              ml_parameters;
+        std::unique_ptr<Epetra_MultiVector> constant_modes;
+        amg_data.set_parameters(ml_parameters, constant_modes, stiffness_matrix);
+        const Epetra_MultiVector modes = rigid_body_modes(dof_handler, stiffness_matrix);
+        ml_parameters.set("null space: type", "pre-computed");
+        ml_parameters.set("null space: dimension", modes.NumVectors());
+        ml_parameters.set("null space: vectors", modes.Values());
+        amg.initialize(stiffness_matrix, ml_parameters);
+      }
+  }
+
+
+
+  Epetra_MultiVector
+  StaticContactSolver::rigid_body_modes(const DoFHandler<dim> &               dof_handler,
+                                        const TrilinosWrappers::SparseMatrix &matrix)
+  {
+    const IndexSet &   owned = dof_handler.locally_owned_dofs();
+    Epetra_MultiVector modes(matrix.trilinos_matrix().OperatorDomainMap(), 2 * dim);
+    AssertThrow(modes.ConstantStride() && modes.MyLength() == int(owned.n_elements()),
+                ExcInternalError());
+    const FiniteElement<dim> &           fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              if (!owned.is_element(dofs[i]))
+                continue;
+              const unsigned int row       = owned.index_within_set(dofs[i]);
+              const unsigned int component = fe.system_to_component_index(i).first;
+              // Q1: the base element's shape functions are the vertices
+              const Point<dim> &x = cell->vertex(fe.system_to_component_index(i).second);
+              for (unsigned int m = 0; m < dim; ++m)
+                modes[m][row] = (m == component ? 1. : 0.);
+              // rotation about axis r: e_r x x, component 'component'
+              for (unsigned int r = 0; r < dim; ++r)
+                {
+                  const unsigned int a = (r + 1) % dim, b = (r + 2) % dim;
+                  modes[dim + r][row] = component == a ? -x[b] : component == b ? x[a] : 0.;
+                }
+            }
+        }
+    return modes;
   }
 
 

@@ -13,6 +13,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_MultiVector.h>
+
 #include <wheelrail/contact.h>
 #include <wheelrail/explicit_solver.h>
 #include <wheelrail/parameters.h>
@@ -91,6 +93,12 @@ namespace WheelRail
     /** Newton at a fixed bore displacement; returns the contact force. */
     double
     solve_at(const double delta, StaticResult &result, std::ostream &log);
+
+    /** The six rigid-body modes (translations, rotations about the
+     *  coordinate axes) on the locally owned rows of @p matrix, for the
+     *  AMG's near null space. */
+    static Epetra_MultiVector
+    rigid_body_modes(const DoFHandler<dim> &dof_handler, const TrilinosWrappers::SparseMatrix &matrix);
 
     const Parameters &parameters;
     ExplicitSolver &  solver;
