@@ -195,8 +195,12 @@ namespace WheelRail
                         "0.5",
                         Patterns::Double(0.05, 4),
                         "Growth of the target cell size with the distance d "
-                        "from the solution zone, h = h_min + Grading d [-], "
-                        "range [0.05, 4].");
+                        "of a cell's centre from the solution zone, h = h_min "
+                        "+ Grading d [-], range [0.05, 4] (the rolling path "
+                        "likewise). Cells that reach into the zone (path) get "
+                        "its size whatever the grading; from about 2 on, the "
+                        "mesh is the smallest 2:1 balanced one around the "
+                        "zones (paper case: 268,704 cells, 312,615 at 0.5).");
       prm.declare_entry("Rolling path cell size",
                         "0",
                         Patterns::Double(0, 1),

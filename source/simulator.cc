@@ -212,6 +212,18 @@ namespace WheelRail
           << "  smallest L_e = V/A_max       : " << fmt(q.min_length * 1e3) << " mm" << std::endl
           << "  smallest scaled Jacobian     : " << fmt(q.min_scaled_jacobian, 4) << std::endl
           << "  largest aspect ratio         : " << fmt(q.max_aspect_ratio, 4) << std::endl;
+    if (parameters.problem.geometry == "wheel and rail")
+      for (const auto &[id, name] : {std::pair{Geometry::MaterialIds::wheel, "wheel"},
+                                     std::pair{Geometry::MaterialIds::rail, "rail "}})
+        {
+          const Geometry::ZoneCells z = Geometry::zone_cells(parameters.geometry, id, triangulation);
+          pcout << "  solution zone, " << name << "        : ";
+          if (z.n_cells == 0)
+            pcout << "none" << std::endl;
+          else
+            pcout << z.n_cells << " cells, longest edge " << fmt(z.max_longest_edge * 1e3)
+                  << " mm" << std::endl;
+        }
 
     pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
     std::vector<std::pair<types::material_id, std::string>> bodies;

@@ -68,6 +68,27 @@ namespace WheelRail
     Point<dim>
     wheel_centre(const GeometryParameters &parameters);
 
+    /** The cells of one body that reach into its solution zone. */
+    struct ZoneCells
+    {
+      /** Cells whose bounding box in the refinement's chart coordinates
+       *  shares a volume with the zone (all ranks). */
+      types::global_cell_index n_cells = 0;
+      /** Largest longest edge among them [m] (0 without such cells). */
+      double max_longest_edge = 0;
+    };
+
+    /**
+     * Count the cells of body @p material (wheel or rail) that reach into
+     * its solution zone and find the largest of them: a check that the
+     * whole zone is meshed at Minimum cell size whatever the grading.
+     * Collective over the triangulation's communicator.
+     */
+    ZoneCells
+    zone_cells(const GeometryParameters &                       parameters,
+               const types::material_id                         material,
+               const parallel::distributed::Triangulation<dim> &triangulation);
+
     /** Exact volume of the body with material id @p material (analytic). */
     double
     exact_volume(const GeometryParameters &parameters,
