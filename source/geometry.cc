@@ -262,10 +262,10 @@ namespace WheelRail
        * by the coarse size (wheel: growing inwards with the depth). With
        * @p whole_zone, a cell whose chart bounding box overlaps the zone
        * (path) gets the zone's (path's) size whatever the grading: with the
-       * centre's distance
-       * alone, a cell that reaches into the zone from outside keeps
-       * h > h_min once Grading exceeds about 0.5 (at 2.5 the wheel's coarse
-       * cells were not refined at all).
+       * centre's distance alone, a cell that reaches into the zone from
+       * outside keeps h > h_min once Grading exceeds about 0.5 (at 2.5 the
+       * wheel's coarse cells were not refined at all). For wheel and rail
+       * cells only (the caller below returns the bar's "no refinement").
        */
       double
       target_size(const GeometryParameters &p,
@@ -275,8 +275,6 @@ namespace WheelRail
                   const double              coarse,
                   const bool                whole_zone)
       {
-        if (material != MaterialIds::rail && material != MaterialIds::wheel)
-          return std::numeric_limits<double>::max(); // the bar is not refined
         const double          g = p.grading;
         const RefinementBoxes b = refinement_boxes(p, material);
         double h = (material == MaterialIds::rail) ? coarse : coarse + g * centre[2];
@@ -330,7 +328,7 @@ namespace WheelRail
       {
         const types::material_id material = cell->material_id();
         if (material != MaterialIds::rail && material != MaterialIds::wheel)
-          return std::numeric_limits<double>::max();
+          return std::numeric_limits<double>::max(); // the bar is not refined
         const auto [centre, box] = cell_in_chart(p, cell);
         return target_size(p, material, centre, box, coarse, whole_zone);
       }
