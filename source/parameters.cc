@@ -811,6 +811,16 @@ namespace WheelRail
                       Patterns::Double(1e-16, 1e-2),
                       "Relative tolerance of CG with AMG [-], range "
                       "[1e-16, 1e-2].");
+    prm.declare_entry("Inexact Newton",
+                      "false",
+                      Patterns::Bool(),
+                      "Solve each Newton step only as accurately as the next "
+                      "iterate can use (Eisenstat-Walker): CG stops at the "
+                      "relative residual 0.5 x Newton tolerance x load / "
+                      "Newton residual, kept within [Linear solver tolerance, "
+                      "1e-2]. The converged state meets the same Newton "
+                      "tolerance with fewer CG iterations; false: every step "
+                      "to Linear solver tolerance.");
     prm.declare_entry("AMG near null space",
                       "translations",
                       Patterns::Selection("translations|rigid body modes"),
@@ -835,6 +845,7 @@ namespace WheelRail
     newton_tolerance      = prm.get_double("Newton tolerance");
     max_newton_iterations = prm.get_integer("Max Newton iterations");
     linear_tolerance      = prm.get_double("Linear solver tolerance");
+    inexact_newton        = prm.get_bool("Inexact Newton");
     amg_null_space        = prm.get("AMG near null space");
     prm.leave_subsection();
   }

@@ -213,6 +213,7 @@ namespace WheelRail
     double       newton_tolerance;
     unsigned int max_newton_iterations;
     double       linear_tolerance;
+    bool         inexact_newton; ///< CG tolerance from the Newton residual
     std::string  amg_null_space; ///< "translations" or "rigid body modes"
 
     static void declare_parameters(ParameterHandler &prm);
