@@ -299,13 +299,15 @@ namespace WheelRail
         // linear residual only to half the Newton tolerance, i.e. relative
         // 0.5 tol / |r|, which the next iterate can use; while |r| is large
         // at most 1e-2, so that the step's error stays below what Newton's
-        // quadratic term leaves. Paper mesh, static start at A on 2 ranks:
-        // the same 9 Newton iterations and state, CG 1,067 -> 505, 148 -> 74 s.
+        // quadratic term leaves (Linear solver tolerance <= 1e-2 by its
+        // range). Paper case on the Grading-2 mesh, static start at A on 2
+        // ranks: the same 9 Newton iterations and state, CG 1,067 -> 505,
+        // 148 -> 74 s.
         double eta = parameters.statics.linear_tolerance;
         if (parameters.statics.inexact_newton)
           eta = std::clamp(0.5 * parameters.statics.newton_tolerance * load_scale / norm,
                            parameters.statics.linear_tolerance,
-                           std::max(1e-2, parameters.statics.linear_tolerance));
+                           1e-2);
         SolverControl control(5000, eta * rhs.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         try
