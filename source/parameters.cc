@@ -132,7 +132,8 @@ namespace WheelRail
                         Patterns::Integer(0, 4096),
                         "Number of coarse cells around the wheel [-], "
                         "range [0, 4096]; 0 = chosen from the coarse cell "
-                        "size at the tread.");
+                        "size at the tread (and the only value allowed with "
+                        "Mesh/Align coarse cells with zone).");
       prm.leave_subsection();
 
       prm.enter_subsection("Rail");
@@ -219,6 +220,17 @@ namespace WheelRail
                         "Refine the arc of the wheel tread that meets the "
                         "solution zone when the wheel rolls from Centre x "
                         "to O.");
+      prm.declare_entry("Align coarse cells with zone",
+                        "false",
+                        Patterns::Bool(),
+                        "Lay the coarse mesh lines so that the coarse cells "
+                        "over the solution zone refine onto Minimum cell size "
+                        "in all three directions (rail: cells of the coarse "
+                        "size over the zone, anchored at the rail top; wheel: "
+                        "one cell of 4 x the coarse size over the zone's arc, "
+                        "width and depth), the rest of each body divided into "
+                        "cells no larger. Off: uniform coarse divisions, whose "
+                        "zone cells come out 0.8-1 x Minimum cell size.");
       prm.leave_subsection();
 
       prm.enter_subsection("Block on plate");
@@ -312,6 +324,7 @@ namespace WheelRail
       grading          = prm.get_double("Grading");
       refine_wheel     = prm.get_bool("Refine wheel");
       path_cell_size   = prm.get_double("Rolling path cell size");
+      align_zone       = prm.get_bool("Align coarse cells with zone");
       prm.leave_subsection();
 
       prm.enter_subsection("Bar");
@@ -374,6 +387,12 @@ namespace WheelRail
     AssertThrow(zone_depth < rail_head_height,
                 ExcMessage("Geometry/Mesh/Solution zone depth must be below "
                            "Geometry/Rail/Head height."));
+    AssertThrow(!align_zone || wheel_circumferential_cells == 0,
+                ExcMessage("Geometry/Wheel/Circumferential cells = " +
+                           std::to_string(wheel_circumferential_cells) +
+                           " cannot be combined with Geometry/Mesh/Align coarse "
+                           "cells with zone = true, which chooses the wheel's "
+                           "divisions itself: set one of them back (0, false)."));
   }
 
 

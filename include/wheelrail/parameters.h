@@ -71,6 +71,8 @@ namespace WheelRail
     double grading;
     bool   refine_wheel;
     double path_cell_size; ///< along the whole rolling path, 0 = off [m]
+    /** Coarse cells that refine onto h_min in every direction over the zone. */
+    bool align_zone;
     // bar (verification geometry)
     double              bar_length;
     double              bar_width;
