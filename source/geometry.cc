@@ -515,11 +515,12 @@ namespace WheelRail
             // radii: the top layer hw thick over the zone's depth, then
             // geometric layers of about square cells down to the bore
             std::vector<double> r = {R};
-            const double        d_mean = 2 * M_PI / s.size();
-            const double        r1     = R - hw * std::max(1., std::ceil(p.zone_depth / hw - 1e-9));
-            for (double x = R - hw; x > r1 + 1e-9 * R; x -= hw)
-              r.push_back(x);
-            r.push_back(r1);
+            const unsigned int  n_top =
+              std::max(1., std::ceil(p.zone_depth / hw - 1e-9));
+            for (unsigned int k = 1; k <= n_top; ++k)
+              r.push_back(R - hw * k);
+            const double r1     = r.back();
+            const double d_mean = 2 * M_PI / s.size();
             const unsigned int n_lower = std::max<unsigned int>(
               1, std::round(std::log(p.bore_radius / r1) / std::log(1 - d_mean)));
             for (unsigned int k = 1; k <= n_lower; ++k)

@@ -225,12 +225,16 @@ namespace WheelRail
                         Patterns::Bool(),
                         "Lay the coarse mesh lines so that the coarse cells "
                         "over the solution zone refine onto Minimum cell size "
-                        "in all three directions (rail: cells of the coarse "
-                        "size over the zone, anchored at the rail top; wheel: "
-                        "one cell of 4 x the coarse size over the zone's arc, "
-                        "width and depth), the rest of each body divided into "
-                        "cells no larger. Off: uniform coarse divisions, whose "
-                        "zone cells come out 0.8-1 x Minimum cell size.");
+                        "(wheel: one cell of 4 x the coarse size over the "
+                        "zone's arc, width and depth, its lateral lines half a "
+                        "zone cell off centre; rail: cells of the coarse size "
+                        "over the zone, anchored at the rail top, shrunk by "
+                        "the arc top's slope and 4 % shorter along x), the "
+                        "rest of each body divided into cells no larger. Wheel "
+                        "and rail nodes thus never coincide (coincident grids "
+                        "give a checkerboard pressure). Off: uniform coarse "
+                        "divisions, whose zone cells come out 0.8-1 x Minimum "
+                        "cell size.");
       prm.leave_subsection();
 
       prm.enter_subsection("Block on plate");
