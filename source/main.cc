@@ -9,10 +9,15 @@
 #include <wheelrail/parameters.h>
 #include <wheelrail/simulator.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace
 {
@@ -37,6 +42,13 @@ main(int argc, char **argv)
   const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
 
   const std::string input = argc > 1 ? argv[1] : "";
+  // errors meet on a communicator of their own, so that a rank that failed
+  // alone cannot be matched with a collective the others are waiting in
+  MPI_Comm error_comm;
+  MPI_Comm_dup(comm, &error_comm);
+  const std::unique_ptr<MPI_Comm, void (*)(MPI_Comm *)> free_error_comm(&error_comm, [](MPI_Comm *c) {
+    MPI_Comm_free(c);
+  });
   const auto fail = [&](std::string message) {
     // name the input file as the user knows it, without its directory
     const std::string name = std::filesystem::path(input).filename().string();
@@ -46,11 +58,38 @@ main(int argc, char **argv)
       for (std::size_t pos = 0; (pos = message.find(input, pos)) != std::string::npos;
            pos += name.size())
         message.replace(pos, input.size(), name);
-    if (rank == 0 || ranks > 1)
-      std::cerr << (ranks > 1 ? "[rank " + std::to_string(rank) + "] " : std::string())
-                << "Error: " << message << std::endl;
-    if (ranks > 1)
-      MPI_Abort(comm, 1);
+    if (ranks == 1)
+      {
+        std::cerr << "Error: " << message << std::endl;
+        return 1;
+      }
+    // A check that every rank makes (the parameters, the setup, a
+    // divergence) fails on all ranks at once: rank 0 prints each distinct
+    // message once and all ranks end normally. A rank that fails alone
+    // while the others go on would leave them waiting in a collective: it
+    // prints its message and aborts the job.
+    MPI_Request request;
+    MPI_Ibarrier(error_comm, &request);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    int        all      = 0;
+    while (!all && std::chrono::steady_clock::now() < deadline)
+      {
+        MPI_Test(&request, &all, MPI_STATUS_IGNORE);
+        if (!all)
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    if (!all)
+      {
+        std::cerr << "[rank " << rank << "] Error: " << message << std::endl;
+        MPI_Abort(comm, 1);
+      }
+    const std::vector<std::string> messages = Utilities::MPI::gather(error_comm, message, 0);
+    if (rank == 0)
+      for (unsigned int r = 0; r < messages.size(); ++r)
+        if (std::find(messages.begin(), messages.begin() + r, messages[r]) ==
+            messages.begin() + r)
+          std::cerr << (r > 0 ? "[rank " + std::to_string(r) + "] " : std::string())
+                    << "Error: " << messages[r] << std::endl;
     return 1;
   };
 

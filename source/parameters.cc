@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameter_file.h>
 #include <wheelrail/parameters.h>
 
 #include <cctype>
@@ -1126,6 +1127,46 @@ namespace WheelRail
 
 
 
+  namespace
+  {
+    /**
+     * A user constant's name must be an identifier that is neither a
+     * variable of the expression nor a name muparser (or deal.II's
+     * FunctionParser) already gives a meaning: such a name would shadow it
+     * or make the expression fail to parse.
+     */
+    void
+    check_constant_name(const std::string &name,
+                        const std::string &variables,
+                        const std::string &entry)
+    {
+      bool identifier = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
+                                          name[0] == '_');
+      for (const char ch : name)
+        identifier = identifier && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
+      AssertThrow(identifier,
+                  ExcMessage(entry + " constants: '" + name +
+                             "' is not a name (letters, digits and '_', not starting with a "
+                             "digit)."));
+      for (const auto &v : Utilities::split_string_list(variables))
+        AssertThrow(name != v,
+                    ExcMessage(entry + " constants: '" + name +
+                               "' is a variable of the expression (" + variables +
+                               ") and cannot be a constant."));
+      static const char *reserved[] = {
+        "_pi",  "_e",    "sin",   "cos",   "tan",  "asin", "acos", "atan", "sinh", "cosh",
+        "tanh", "asinh", "acosh", "atanh", "log2", "log10", "log", "ln",   "exp",  "sqrt",
+        "sign", "rint",  "abs",   "min",   "max",  "sum",  "avg",  "if",   "int",  "ceil",
+        "cot",  "csc",   "floor", "sec",   "pow",  "erfc", "rand", "rand_seed", "atan2", "fmod"};
+      for (const char *r : reserved)
+        AssertThrow(name != r,
+                    ExcMessage(entry + " constants: '" + name +
+                               "' is a built-in function or constant of the expression parser."));
+    }
+  } // namespace
+
+
+
   std::unique_ptr<FunctionParser<3>>
   make_vector_function(const std::string &expression,
                        const std::string &constants_text,
@@ -1138,15 +1179,25 @@ namespace WheelRail
         const auto kv = Utilities::split_string_list(c, '=');
         AssertThrow(kv.size() == 2,
                     ExcMessage(entry + " constants: cannot read '" + c + "' as name=value."));
+        const std::string &name = kv[0];
+        check_constant_name(name, variables, entry);
+        AssertThrow(constants.count(name) == 0,
+                    ExcMessage(entry + " constants: '" + name +
+                               (name == "pi" ? "' is built in (pi = 3.14159...) and cannot be redefined." :
+                                               "' is defined twice.")));
+        double value = 0;
         try
           {
-            constants[kv[0]] = Utilities::string_to_double(kv[1]);
+            value = Utilities::string_to_double(kv[1]);
           }
         catch (...)
           {
             AssertThrow(false,
                         ExcMessage(entry + " constants: '" + kv[1] + "' is not a number."));
           }
+        AssertThrow(std::isfinite(value),
+                    ExcMessage(entry + " constants: " + name + " = " + kv[1] + " is not finite."));
+        constants[name] = value;
       }
     const auto components = Utilities::split_string_list(expression, ';');
     AssertThrow(components.size() == 3,
@@ -1193,30 +1244,7 @@ namespace WheelRail
   void
   Parameters::parse(ParameterHandler &prm, const std::string &filename)
   {
-    std::ifstream in(filename);
-    AssertThrow(in.good(),
-                ExcMessage("Cannot open the parameter file '" + filename + "'."));
-    // 'include FILE' is read relative to the working directory by deal.II;
-    // a relative FILE that exists next to the including file is taken from
-    // there, so that cases in prm/ can include each other from anywhere.
-    // Lines stay one to one: error messages keep their line numbers.
-    std::stringstream text;
-    const auto        directory = std::filesystem::path(filename).parent_path();
-    for (std::string line; std::getline(in, line);)
-      {
-        std::istringstream words(line);
-        std::string        keyword, target;
-        words >> keyword;
-        std::getline(words >> std::ws, target);
-        while (!target.empty() && std::isspace(static_cast<unsigned char>(target.back())))
-          target.pop_back();
-        if ((keyword == "include" || keyword == "INCLUDE") && !target.empty() &&
-            std::filesystem::path(target).is_relative() && !std::filesystem::exists(target) &&
-            std::filesystem::exists(directory / target))
-          line = "include " + (directory / target).string();
-        text << line << '\n';
-      }
-    prm.parse_input(text, filename);
+    ParameterFile::parse(prm, filename);
     problem.parse_parameters(prm);
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);

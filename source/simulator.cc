@@ -1323,7 +1323,10 @@ namespace WheelRail
 
 
   std::string
-  Simulator::divergence_message(const unsigned long n, const Energies &e) const
+  Simulator::divergence_message(const unsigned long n,
+                                const Energies &    e,
+                                const double        velocity_spread,
+                                const double        deepest_penetration) const
   {
     // the first non-finite (or, if all are finite, the fastest) DoF of
     // each rank; the rank with the worst one tells
@@ -1360,15 +1363,38 @@ namespace WheelRail
         where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
               << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
               << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "
-              << "xyz"[solver->dof_component(worst)] << ", u = " << u.local_element(worst)
-              << " m, v = " << v.local_element(worst) << " m/s"
+              << "xyz"[solver->dof_component(worst)] << ", u = " << fmt(u.local_element(worst), 4)
+              << " m, v = " << fmt(v.local_element(worst), 4) << " m/s"
               << (solver->boundary_dof_mask()[worst] ? " (a surface node)" : "");
       }
     const std::string location =
       Utilities::MPI::broadcast(mpi_communicator, where.str(), teller);
 
-    const double dt     = solver->time_step();
-    const double stable = solver->stable_time_step();
+    // the body's size, for the strain that gravity alone would cause
+    double extent = 0;
+    {
+      const auto &points = solver->support_points();
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double lo = std::numeric_limits<double>::max(), hi = -lo;
+          for (const Point<dim> &p : points)
+            {
+              lo = std::min(lo, p[d]);
+              hi = std::max(hi, p[d]);
+            }
+          lo = Utilities::MPI::min(lo, mpi_communicator);
+          hi = Utilities::MPI::max(hi, mpi_communicator);
+          extent = std::max(extent, hi - lo);
+        }
+    }
+    const MaterialParameters &material = parameters.material;
+    const double c              = material.wave_speed();
+    const double gravity_strain = material.density * parameters.solver.gravity.norm() * extent /
+                                  material.youngs_modulus;
+    const double dt             = solver->time_step();
+    const double stable         = solver->stable_time_step();
+    const double critical       = stable / parameters.solver.courant_factor;
+    const double h_min          = critical * c; // the smallest element length
     std::ostringstream message;
     message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
             << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
@@ -1376,16 +1402,32 @@ namespace WheelRail
                     " exceeds Output/Divergence limit " + fmt(parameters.output.divergence_limit) :
                   std::string("NaN or infinite energy"))
             << "; " << location << ". Likely cause: ";
-    if (contact && most_contact_nodes > 0)
+    // the causes in the order in which one hides the next: a load or an
+    // initial state beyond small strains, a contact the search missed, the
+    // contact penalty, the time step
+    if (velocity_spread > 0.05 * c)
+      message << "the initial velocity: its components differ by up to " << fmt(velocity_spread, 4)
+              << " m/s over the nodes, " << fmt(100 * velocity_spread / c, 3)
+              << " % of the wave speed " << fmt(c, 4)
+              << " m/s, i.e. strains of that order at once (Initial conditions)";
+    else if (gravity_strain > 1e-2)
+      message << "the gravity " << fmt(parameters.solver.gravity.norm(), 4)
+              << " m/s^2: its weight alone strains a body of " << fmt(extent, 3) << " m by about "
+              << fmt(gravity_strain, 3) << " (Time integration/Gravity)";
+    else if (contact && deepest_penetration > 0.5 * h_min)
+      message << "a contact missed or overrun: slave nodes reached " << fmt(deepest_penetration * 1e3, 3)
+              << " mm into the master surface, more than half the smallest element length " << fmt(h_min * 1e3, 3)
+              << " mm (Contact/Search margin, Search interval; or Penalty scale factor too soft)";
+    else if (contact && most_contact_nodes > 0)
       message << "the contact (up to " << most_contact_nodes
               << " nodes in contact so far), penalty scale factor "
               << fmt(parameters.contact.penalty_scale)
               << " (too stiff for the time step " << fmt(dt)
               << " s, or too soft for the load: Contact/Penalty scale factor, Time "
                  "integration/Courant factor)";
-    else if (dt > 0.95 * stable)
-      message << "the time step " << fmt(dt) << " s at the stable step " << fmt(stable)
-              << " s (Time integration/Time step, Courant factor)";
+    else if (dt > 0.95 * critical)
+      message << "the time step " << fmt(dt) << " s at the critical step " << fmt(critical)
+              << " s of the mesh (Time integration/Time step, Courant factor)";
     else
       message << "an unconstrained body or an initial condition far from equilibrium";
     message << ". The statistics and probes up to the last statistics row were written.";
@@ -1433,6 +1475,24 @@ namespace WheelRail
         record_probe();
       }
     const unsigned long first_step = solver->step_number();
+    // for the diagnosis of a divergence
+    double velocity_spread = 0, deepest_penetration = 0;
+    {
+      const VectorType &v = solver->velocity();
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          double lo = std::numeric_limits<double>::max(), hi = -lo;
+          for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+            if (solver->dof_component(i) == d)
+              {
+                lo = std::min(lo, v.local_element(i));
+                hi = std::max(hi, v.local_element(i));
+              }
+          velocity_spread = std::max(velocity_spread,
+                                     Utilities::MPI::max(hi, mpi_communicator) -
+                                       Utilities::MPI::min(lo, mpi_communicator));
+        }
+    }
     auto last_checkpoint = std::chrono::steady_clock::now();
     // the timed part of the run: the steps after the warm-up
     using Clock                        = std::chrono::steady_clock;
@@ -1462,6 +1522,8 @@ namespace WheelRail
         record_probe();
         if (contact)
           {
+            if (std::isfinite(contact->summary().max_penetration))
+              deepest_penetration = std::max(deepest_penetration, contact->summary().max_penetration);
             friction_violations += contact->summary().n_violation;
             most_contact_nodes = std::max(most_contact_nodes, contact->summary().n_contact);
           }
@@ -1477,7 +1539,8 @@ namespace WheelRail
                 write_probe();
                 if (contact)
                   write_contact_nodes("contact_nodes.csv");
-                AssertThrow(false, ExcMessage(divergence_message(n, e)));
+                AssertThrow(false,
+                            ExcMessage(divergence_message(n, e, velocity_spread, deepest_penetration)));
               }
             if (!have_initial_energies)
               {

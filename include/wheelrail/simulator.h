@@ -80,9 +80,15 @@ namespace WheelRail
     read_checkpoint();
     static constexpr std::uint64_t checkpoint_magic = 0x77686c7263687031ull; // "whlrchp1"
 
-    /** Where and why a run diverged (all ranks call it). */
+    /** Where and why a run diverged (all ranks call it): @p velocity_spread
+     *  is the largest spread of a velocity component over the nodes at the
+     *  start of the run [m/s], @p deepest_penetration the deepest contact
+     *  penetration seen in the run [m]. */
     std::string
-    divergence_message(const unsigned long n, const Energies &e) const;
+    divergence_message(const unsigned long n,
+                       const Energies &    e,
+                       const double        velocity_spread,
+                       const double        deepest_penetration) const;
     /** Time split, ns per element-step, the spread of the step times
      *  (@p step_seconds: this rank's timed steps, reordered here), peak
      *  memory and the projected full paper run: on the screen and in

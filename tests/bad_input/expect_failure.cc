@@ -2,7 +2,8 @@
 // and exit status; exits 0 only if wheelrail failed with a non-zero status.
 // The file is copied into the working directory (the test's own directory in
 // the build tree) and named bare, as a user in the case's directory types it:
-// `wheelrail case.prm`.
+// `wheelrail case.prm`. Files beside it named NAME.*.inc (parameter files that
+// NAME.prm includes) are copied with it.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -17,6 +18,14 @@ main(int argc, char **argv)
   const std::filesystem::path source(argv[1]);
   const std::filesystem::path name = source.filename();
   std::filesystem::copy_file(source, name, std::filesystem::copy_options::overwrite_existing);
+  const std::string stem = source.stem().string() + ".";
+  for (const auto &entry : std::filesystem::directory_iterator(source.parent_path()))
+    {
+      const std::string file = entry.path().filename().string();
+      if (file.compare(0, stem.size(), stem) == 0 && entry.path().extension() == ".inc")
+        std::filesystem::copy_file(entry.path(), file,
+                                   std::filesystem::copy_options::overwrite_existing);
+    }
   const std::string command =
     std::string(WHEELRAIL_EXECUTABLE) + " '" + name.string() + "' 2>&1";
   FILE *pipe = popen(command.c_str(), "r");
