@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Print the README's parameter reference (Markdown) from `wheelrail --help`.
+"""Print the parameter reference of doc/parameters.md (Markdown) from `wheelrail --help`.
 
 Usage: build/wheelrail --help | doc/parameter_table.py
 """
