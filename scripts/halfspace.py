@@ -154,7 +154,8 @@ def run(args):
         ("normal_gap_residual", normal["gap_residual"], "-"),
         ("friction_iterations", sol["iterations"], "-"),
         ("friction_residual", sol["f_residual"], "-"),
-        ("creepage_iterations", sol.get("outer_iterations", 0), "-"),
+        ("creepage_iterations", sol.get("outer_iterations", 0), "-")] + [
+        ("residual_" + k, v, "-") for k, v in sorted(bem.rolling_residuals(sol, p).items())] + [
         ("elements_x", grid.shape[0], "-"),
         ("elements_y", grid.shape[1] if grid.nc == 2 else 1, "-"),
         ("wall_time", time.time() - t0, "s")]
@@ -367,7 +368,8 @@ def parse(argv):
     g.add_argument("--creepage", type=float, default=0.0, help="longitudinal creepage xi, "
                    "-1..1 [default 0]")
     g.add_argument("--Fx", dest="fx", type=float, default=None, help="longitudinal force on the "
-                   "wheel [N] (--line: N/m) instead of --creepage; |F_x| < f_S F_N")
+                   "wheel [N] (--line: N/m) instead of --creepage; |F_x| < f F_N (Coulomb), f_S F_N "
+                   "(exponential)")
     g.add_argument("--eta", type=float, default=0.0, help="lateral creepage, -1..1 [default 0]")
     g.add_argument("--speed", type=float, default=SPEC["speed"], help="rolling speed V [m/s], "
                    "> 0 [default 38.89]")
@@ -426,6 +428,9 @@ def main(argv):
     except InputError as e:
         print("halfspace.py: error: %s" % e, file=sys.stderr)
         return 2
+    except bem.ConvergenceError as e:
+        print("halfspace.py: error: %s; nothing written" % e, file=sys.stderr)
+        return 3
 
 
 if __name__ == "__main__":

@@ -307,6 +307,10 @@ class Exponential:
         return self.f_d + (self.f_s - self.f_d) * np.exp(-self.k * np.abs(s))
 
 
+class ConvergenceError(RuntimeError):
+    pass
+
+
 def local_slip(w_star, a, bound, mask):
     """Slip traction of one element with the others fixed: q = -lam W,
     W = W* + a q, |q| = bound, i.e. q = -W* / (mu + a) with mu = 1/lam > 0
@@ -334,6 +338,7 @@ def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=200):
     t = np.where(qn > 0, q / np.where(qn > 0, qn, 1.0), 0.0)
     t[0][(qn == 0) & contact] = -1.0 if creep.flat[0] > 0 else 1.0
     a = -grid.diag.reshape((nc,) + (1,) * len(grid.shape))
+    history = []
     for it in range(1, maxit + 1):
         slip = contact & ~stick
         q_slip = np.where(slip, bound * t, 0.0)
@@ -365,11 +370,33 @@ def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=200):
         q_local = local_slip(w_star, a, bound, keep)
         t_new = np.where(keep, q_local / np.where(keep, bound, 1.0), t)
         dt = np.abs(t_new - t)[:, keep].max() if keep.any() else 0.0
+        changed = to_slip.any() or to_stick.any()
+        if not changed and dt < 1e-9:
+            return q, W, stick, it
+        if changed:
+            history = []
+        elif keep.any():
+            # the directions alone: Anderson acceleration of t -> t_new
+            history.append((t[:, keep].ravel(), t_new[:, keep].ravel()))
+            t_new[:, keep] = anderson(history[-6:]).reshape(nc, -1)
+            norm = np.linalg.norm(t_new, axis=0)
+            t_new = np.where(keep, t_new / np.where(keep, norm, 1.0), t_new)
         t = np.where(to_slip, q / np.where(qn > 0, qn, 1.0), t_new)
         stick = (stick & ~to_slip) | to_stick
-        if not to_slip.any() and not to_stick.any() and dt < 1e-9:
-            break
-    return q, W, stick, it
+    raise ConvergenceError("TANG: stick/slip sets or slip directions not converged in "
+                           "%d iterations (last direction change %.1e)" % (maxit, dt))
+
+
+def anderson(history):
+    """Anderson-accelerated iterate from pairs (x_k, g(x_k)), oldest first."""
+    x, g = history[-1]
+    if len(history) < 2:
+        return g
+    f = [gk - xk for xk, gk in history]
+    df = np.array([f[i + 1] - f[i] for i in range(len(f) - 1)]).T
+    dg = np.array([history[i + 1][1] - history[i][1] for i in range(len(f) - 1)]).T
+    gamma = np.linalg.lstsq(df, f[-1], rcond=None)[0]
+    return g - dg @ gamma
 
 
 def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, start=None):
@@ -400,6 +427,9 @@ def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, s
             f = f_new if law.velocity_dependent else f
             break
         f = f + relax * (f_new - f)
+    else:
+        raise ConvergenceError("friction law: fixed point not converged in %d iterations "
+                               "(max |f_new - f| %.1e)" % (maxit, history[-1]))
     return dict(q=q, W=W, stick=stick & contact, f=f, f_residual=history[-1],
                 iterations=it, history=history, contact=contact)
 
@@ -438,8 +468,11 @@ def solve_rolling_force(grid, p, fx_target, law, speed, eta=0.0, rtol=1e-8, maxi
         xi = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
         val, sol = fx(sign * xi)
         fv = abs(val) - abs(fx_target)
-        if abs(fv) <= rtol * abs(fx_target) or hi - lo < 1e-14:
+        if abs(fv) <= rtol * abs(fx_target):
             break
+        if hi - lo < 1e-14 * hi:
+            raise ConvergenceError("creepage for F_x = %g: F_x(xi) jumps across the target "
+                                   "at xi = %g" % (fx_target, sign * xi))
         if fv > 0:
             hi, f_hi = xi, fv
             if side == 1:
@@ -450,6 +483,27 @@ def solve_rolling_force(grid, p, fx_target, law, speed, eta=0.0, rtol=1e-8, maxi
             if side == -1:
                 f_hi *= 0.5
             side = -1
+    else:
+        raise ConvergenceError("creepage for F_x = %g N: not converged in %d iterations"
+                               % (fx_target, maxit))
     sol["xi"] = sign * xi
     sol["outer_iterations"] = it + 1
     return sol
+
+
+def rolling_residuals(sol, p):
+    """Conditions of the solution: in stick |W| and the excess of |q| over
+    f p; in slip | |q| - f p | / (f p) and the misalignment |q/|q| + W/|W||."""
+    q, W, f = sol["q"], sol["W"], sol["f"]
+    stick, slip = sol["stick"], sol["contact"] & ~sol["stick"]
+    qn, wn, g = np.linalg.norm(q, axis=0), np.linalg.norm(W, axis=0), f * p
+    out = dict(stick_slip=0.0, stick_excess=0.0, slip_bound=0.0, slip_alignment=0.0)
+    g = np.where(g > 0, g, 1.0)
+    qn, wn = np.where(qn > 0, qn, 1.0), np.where(wn > 0, wn, 1.0)
+    if stick.any():
+        out["stick_slip"] = wn[stick].max()
+        out["stick_excess"] = max(0.0, ((qn - g) / g)[stick].max())
+    if slip.any():
+        out["slip_bound"] = (np.abs(qn - g) / g)[slip].max()
+        out["slip_alignment"] = np.linalg.norm(q / qn + W / wn, axis=0)[slip].max()
+    return out

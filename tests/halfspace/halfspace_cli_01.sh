@@ -18,6 +18,7 @@ assert len(rows) == 16 * 17 and len(line) == 16, (len(rows), len(line))
 assert abs(tot["F_x"] / 42090. - 1) < 1e-6, tot["F_x"]
 assert abs(tot["F_N"] / 140.3e3 - 1) < 1e-9, tot["F_N"]
 assert tot["xi"] < 0, "a driving force needs xi < 0"
+assert tot["residual_stick_slip"] < 1e-9 and tot["residual_slip_alignment"] < 1e-6, tot
 states = [r["state"] for r in rows]
 slip = states.count("slip") / (states.count("slip") + states.count("stick"))
 assert abs(slip - tot["slip_area_fraction"]) < 1e-8
