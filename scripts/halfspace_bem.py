@@ -326,7 +326,7 @@ def local_slip(w_star, a, bound, mask):
     return np.where(mask, -w / (0.5 * (lo + hi) + a), 0.0)
 
 
-def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=200):
+def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=300, beta=0.5):
     """Kalker's TANG for fixed traction bounds g = f p (> 0 in contact).
 
     Stick set H: w - du/dx = 0; slip set S: q = g t, t = -W/|W|.
@@ -338,7 +338,7 @@ def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=200):
     t = np.where(qn > 0, q / np.where(qn > 0, qn, 1.0), 0.0)
     t[0][(qn == 0) & contact] = -1.0 if creep.flat[0] > 0 else 1.0
     a = -grid.diag.reshape((nc,) + (1,) * len(grid.shape))
-    history = []
+    history = []  # of the slip directions while the sets stay the same
     for it in range(1, maxit + 1):
         slip = contact & ~stick
         q_slip = np.where(slip, bound * t, 0.0)
@@ -373,30 +373,36 @@ def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=200):
         changed = to_slip.any() or to_stick.any()
         if not changed and dt < 1e-9:
             return q, W, stick, it
-        if changed:
-            history = []
-        elif keep.any():
-            # the directions alone: Anderson acceleration of t -> t_new
-            history.append((t[:, keep].ravel(), t_new[:, keep].ravel()))
-            t_new[:, keep] = anderson(history[-6:]).reshape(nc, -1)
-            norm = np.linalg.norm(t_new, axis=0)
-            t_new = np.where(keep, t_new / np.where(keep, norm, 1.0), t_new)
+        # the slip directions: damped update t + beta (t_new - t) (the undamped
+        # block-Jacobi step can diverge through the elements' mutual
+        # influence), Anderson-accelerated while the sets stay the same
+        # (in 2-D the local problems give the directions, +-1, exactly)
+        if nc > 1 and keep.any():
+            pair = (t[:, keep].ravel(), t_new[:, keep].ravel())
+            history = [] if changed else history + [pair]
+            t_mix = t_new.copy()
+            t_mix[:, keep] = anderson(history[-6:] or [pair], beta).reshape(nc, -1)
+            norm = np.linalg.norm(t_mix, axis=0)
+            # a reversed direction (norm near 0) takes the undamped step
+            good = keep & (norm > 0.1)
+            t_new = np.where(good, t_mix / np.where(good, norm, 1.0), t_new)
         t = np.where(to_slip, q / np.where(qn > 0, qn, 1.0), t_new)
         stick = (stick & ~to_slip) | to_stick
     raise ConvergenceError("TANG: stick/slip sets or slip directions not converged in "
                            "%d iterations (last direction change %.1e)" % (maxit, dt))
 
 
-def anderson(history):
-    """Anderson-accelerated iterate from pairs (x_k, g(x_k)), oldest first."""
+def anderson(history, beta):
+    """Anderson-accelerated iterate with mixing beta from pairs (x_k, g(x_k)),
+    oldest first; with one pair the damped step x + beta (g - x)."""
     x, g = history[-1]
-    if len(history) < 2:
-        return g
     f = [gk - xk for xk, gk in history]
+    if len(history) < 2:
+        return x + beta * f[-1]
     df = np.array([f[i + 1] - f[i] for i in range(len(f) - 1)]).T
-    dg = np.array([history[i + 1][1] - history[i][1] for i in range(len(f) - 1)]).T
+    dx = np.array([history[i + 1][0] - history[i][0] for i in range(len(f) - 1)]).T
     gamma = np.linalg.lstsq(df, f[-1], rcond=None)[0]
-    return g - dg @ gamma
+    return x + beta * f[-1] - (dx + beta * df) @ gamma
 
 
 def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, start=None):
