@@ -3,6 +3,9 @@
 #   ./run.sh                    install missing packages, build (Release) into build/,
 #                               run prm/default.prm on 2 MPI ranks
 #   ./run.sh test               same set-up, then the whole test suite (ctest)
+#   ./run.sh test-portable      the same suite on a build for any x86-64 CPU
+#                               (-DWHEELRAIL_NATIVE=OFF, in build-generic/): the
+#                               references hold whatever CPU built and runs it
 #   ./run.sh CASE.prm [-np N] [--resume]  same set-up, then run CASE.prm on N ranks
 #                               (default 2); --resume continues from its checkpoint
 #   ./run.sh bench [N ...]      same set-up, then the speed benchmark prm/bench_paper.prm
@@ -41,6 +44,13 @@ build() {
     cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release
   fi
   cmake --build build -j "$(nproc)"
+}
+
+# The generic build: no -march=native, so x86-64's baseline (SSE2, no FMA).
+build_generic() {
+  install_missing_packages
+  cmake -S . -B build-generic -G Ninja -DCMAKE_BUILD_TYPE=Release -DWHEELRAIL_NATIVE=OFF
+  cmake --build build-generic -j "$(nproc)"
 }
 
 # Open MPI refuses root unless told otherwise (CI and containers run as root);
@@ -104,6 +114,10 @@ case "$verb" in
     build
     ctest --test-dir build -j "$(nproc)" --output-on-failure
     ;;
+  test-portable)
+    build_generic
+    ctest --test-dir build-generic -j "$(nproc)" --output-on-failure
+    ;;
   build)
     build
     ;;
@@ -124,7 +138,7 @@ case "$verb" in
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -142,7 +156,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac
