@@ -322,6 +322,37 @@ namespace WheelRail
       const double c = std::cos(theta), s = std::sin(theta);
       return Tensor<1, dim>({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
     }
+
+
+
+    /**
+     * Throw if an entry of Boundary conditions names a boundary id that the
+     * mesh does not have: such an entry would silently hold or load nothing.
+     * Fixed boundaries at its default (the rail's ids) is left to geometries
+     * without a rail to ignore. Collective: the ids of the whole mesh are gathered from all ranks.
+     */
+    void
+    check_boundary_ids(const Parameters &prm, const Triangulation<dim> &triangulation)
+    {
+      const std::vector<types::boundary_id> mesh_ids = triangulation.get_boundary_ids();
+      std::string                           listed;
+      for (const types::boundary_id id : mesh_ids)
+        listed += (listed.empty() ? "" : ", ") + std::to_string(id);
+      const auto check = [&](const std::string &entry, const types::boundary_id id) {
+        AssertThrow(std::find(mesh_ids.begin(), mesh_ids.end(), id) != mesh_ids.end(),
+                    ExcMessage("Boundary conditions/" + entry + " names boundary id " +
+                               std::to_string(id) + ", which the '" + prm.problem.geometry +
+                               "' mesh does not have (its boundary ids: " + listed + ")."));
+      };
+      if (!prm.boundary.fixed_is_default)
+        for (const auto &entry : prm.boundary.fixed)
+          check("Fixed boundaries", entry.first);
+      for (const types::boundary_id id : prm.boundary.prescribed_velocity_ids)
+        check("Prescribed velocity boundaries", id);
+      for (const types::boundary_id id : prm.boundary.applied_force_ids)
+        check("Applied force boundaries", id);
+    }
+
   } // namespace
 
 
@@ -340,6 +371,7 @@ namespace WheelRail
   void
   ExplicitSolver::setup()
   {
+    check_boundary_ids(prm, triangulation);
     dof_handler.distribute_dofs(fe);
 
     IndexSet relevant;

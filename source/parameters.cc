@@ -588,9 +588,30 @@ namespace WheelRail
     for (const auto &entry :
          Utilities::split_string_list(prm.get("Fixed boundaries"), ','))
       {
+        // An id given twice is rejected rather than merged: a repeated id
+        // is more likely a mistyped other id than two halves of one
+        // condition, and merging would hide that boundary's missing
+        // condition.
         const auto kv = Utilities::split_string_list(entry, ':');
-        fixed[Utilities::string_to_int(kv[0])] = kv[1];
+        const auto id = static_cast<types::boundary_id>(Utilities::string_to_int(kv[0]));
+        const auto previous = fixed.find(id);
+        if (previous != fixed.end())
+          {
+            std::string both;
+            for (const char c : {'x', 'y', 'z'})
+              if ((previous->second + kv[1]).find(c) != std::string::npos)
+                both += c;
+            AssertThrow(false,
+                        ExcMessage("Boundary conditions/Fixed boundaries names boundary id " +
+                                   std::to_string(id) + " twice ('" + std::to_string(id) + ": " +
+                                   previous->second + "' and '" + entry +
+                                   "'): give each id once with all its held components, e.g. '" +
+                                   std::to_string(id) + ": " + both + "'."));
+          }
+        fixed[id] = kv[1];
       }
+    fixed_is_default =
+      fixed == std::map<types::boundary_id, std::string>{{11, "xyz"}, {12, "x"}};
     prescribed_velocity_ids.clear();
     for (const int id : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Prescribed velocity boundaries"))))

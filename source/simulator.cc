@@ -792,6 +792,44 @@ namespace WheelRail
         probe.location = Point<dim>(all[probe.owner][1], all[probe.owner][2], all[probe.owner][3]);
         probe.dof      = best_dof;
       }
+
+    // A point inside the mesh lies in a cell, within that cell's diameter
+    // of one of its vertices; its nearest node is nearer still, and the
+    // cells around that node are of the size of the containing cell. A
+    // point farther from its nearest node than the largest cell around
+    // that node lies outside the mesh. The owner of the node has every cell
+    // at it (owned or ghost).
+    const Probe &user = probes.front();
+    double       h    = 0;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == user.owner)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (!cell->is_artificial())
+          {
+            const double d  = cell->diameter();
+            Point<dim>   lo = cell->vertex(0), hi = cell->vertex(0);
+            for (const unsigned int v : cell->vertex_indices())
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  lo[c] = std::min(lo[c], cell->vertex(v)[c]);
+                  hi[c] = std::max(hi[c], cell->vertex(v)[c]);
+                }
+            bool at_node = true;
+            for (unsigned int c = 0; c < dim; ++c)
+              at_node = at_node && user.location[c] >= lo[c] - 1e-9 * d &&
+                        user.location[c] <= hi[c] + 1e-9 * d;
+            if (at_node)
+              h = std::max(h, d);
+          }
+    h                     = Utilities::MPI::max(h, mpi_communicator);
+    const double distance = user.location.distance(user.target);
+    AssertThrow(distance <= h,
+                ExcMessage("Output/Probe point = (" + fmt(user.target[0]) + ", " +
+                           fmt(user.target[1]) + ", " + fmt(user.target[2]) +
+                           ") m lies outside the mesh: its nearest node, (" +
+                           fmt(user.location[0]) + ", " + fmt(user.location[1]) + ", " +
+                           fmt(user.location[2]) + ") m, is " + fmt(distance) +
+                           " m away, more than the largest cell at that node (diameter " +
+                           fmt(h) + " m)."));
   }
 
 

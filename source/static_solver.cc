@@ -20,10 +20,26 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <sstream>
+#include <string>
 #include <tuple>
 
 namespace WheelRail
 {
+  namespace
+  {
+    /** @p x with 6 significant digits. */
+    std::string
+    fmt(const double x)
+    {
+      std::ostringstream s;
+      s << std::setprecision(6) << x;
+      return s.str();
+    }
+  } // namespace
+
+
+
   StaticContactSolver::StaticContactSolver(const Parameters &parameters,
                                            ExplicitSolver &  solver,
                                            PenaltyContact &  contact,
@@ -278,13 +294,23 @@ namespace WheelRail
             log << "    (stalled at " << norm / load_scale << " of the load: accepted)" << std::endl;
             return force;
           }
+        AssertThrow(
+          it < parameters.statics.max_newton_iterations,
+          ExcMessage(
+            "The static contact solve did not converge in Static solve/Max Newton iterations = " +
+            std::to_string(parameters.statics.max_newton_iterations) + " iterations at the axle "
+            "displacement " + fmt(delta * 1e6) + " um: residual " +
+            fmt(norm / load_scale) + " of the load (" +
+            fmt(previous_norm / load_scale) +
+            " in the iteration before) against Static solve/Newton tolerance = " +
+            fmt(parameters.statics.newton_tolerance) + ". " +
+            (norm > 0.5 * previous_norm ?
+               "Newton stagnates: the tolerance is finer than the steps reach with Static "
+               "solve/Linear solver tolerance = " +
+                 fmt(parameters.statics.linear_tolerance) +
+                 " (or the contact set switches between iterations)." :
+               "The residual still falls: raise Max Newton iterations.")));
         previous_norm = norm;
-        AssertThrow(it < parameters.statics.max_newton_iterations,
-                    ExcMessage("The static contact solve did not converge in Static solve/Max "
-                               "Newton iterations = " +
-                               std::to_string(parameters.statics.max_newton_iterations) +
-                               " iterations (residual " + std::to_string(norm / load_scale) +
-                               " of the load)."));
         ++result.newton_iterations;
 
         tangent.set_contact_pairs(contact.active_pairs(), constraints, owned);
@@ -318,7 +344,7 @@ namespace WheelRail
           {
             AssertThrow(false,
                         ExcMessage("CG with AMG did not converge in the static contact solve "
-                                   "(residual " + std::to_string(e.last_residual) +
+                                   "(residual " + fmt(e.last_residual) +
                                    " after " + std::to_string(e.last_step) +
                                    " iterations): check the boundary conditions."));
           }
@@ -356,33 +382,92 @@ namespace WheelRail
   StaticResult
   StaticContactSolver::solve(const double target, std::ostream &log)
   {
+    AssertThrow(target > 0,
+                ExcMessage("The static contact solve needs a positive wheel load, got " +
+                           fmt(target) +
+                           " N: Static solve/Axle load (Problem/Mode = static contact) or, "
+                           "with Wheelset/Static start, the wheelset's masses and Time "
+                           "integration/Gravity."));
     StaticResult result;
-    // first guess: the approach of a Hertzian contact of this size with
-    // 50 % added for the compliance of the bodies
-    double d0 = 1e-4 * std::pow(std::max(target, 1.) / 1.4e5, 2. / 3.);
+    // The wheel touches O once the axle is lowered by the initial gap; the
+    // first guess lies beyond that by the approach of a Hertzian contact of
+    // this size with 50 % added for the compliance of the bodies.
+    const double gap      = parameters.geometry.initial_gap;
+    const double approach = 1e-4 * std::pow(target / 1.4e5, 2. / 3.);
+    double       d0       = gap + approach;
+    // the whole wheel drops by the gap at once, so that Newton (with the
+    // tangent of the undeformed state) starts from a rigid motion instead
+    // of a bore displaced against the rest of the wheel
+    if (gap != 0)
+      for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+        if (solver.dof_material(i) == Geometry::MaterialIds::wheel && solver.dof_component(i) == 2)
+          u.local_element(i) = -gap;
     log << "Static contact solve for a wheel load of " << target * 1e-3 << " kN" << std::endl;
     log << "  axle displacement " << d0 * 1e6 << " um" << std::endl;
     double F0 = solve_at(d0, result, log);
     ++result.load_iterations;
-    double d1 = F0 > 0 ? d0 * std::pow(target / F0, 2. / 3.) : 2 * d0;
+    double d1 = F0 > 0 ? gap + (d0 - gap) * std::pow(target / F0, 2. / 3.) : gap + 2 * approach;
     double F1 = F0;
-    for (unsigned int k = 0; k < 30; ++k)
+
+    // Without contact the axle goes down by 2, 4, ... 2^max_closing
+    // approaches beyond the gap: a wheel that touches nothing then is not
+    // where the entries place it. With contact, at most max_load secant
+    // iterations.
+    const unsigned int max_closing = 6, max_load = 30;
+    unsigned int       n_closing = 1, n_load = 0;
+    while (true)
       {
         log << "  axle displacement " << d1 * 1e6 << " um" << std::endl;
         F1 = solve_at(d1, result, log);
         ++result.load_iterations;
         if (std::abs(F1 - target) <= parameters.statics.load_tolerance * target)
           break;
+        if (F1 <= 0)
+          {
+            AssertThrow(
+              n_closing < max_closing,
+              ExcMessage("The static contact solve found no contact with the axle lowered by " +
+                         fmt(d1) + " m, " + fmt(d1 - gap) +
+                         " m beyond Geometry/Wheel/Initial gap = " + fmt(gap) +
+                         " m (" + std::to_string(1 << max_closing) +
+                         " x the Hertz approach of the load): the wheel does not meet the "
+                         "rail where Geometry/Wheel/Initial gap and Centre x and "
+                         "Geometry/Rail place it, or Contact/Slave boundary and Master "
+                         "boundary are not the surfaces that touch."));
+            ++n_closing;
+            d0 = d1;
+            F0 = F1;
+            d1 = gap + std::pow(2., n_closing) * approach;
+            continue;
+          }
+        ++n_load;
+        AssertThrow(
+          n_load < max_load,
+          ExcMessage(
+            "The static contact solve did not reach Static solve/Axle load within Static "
+            "solve/Load tolerance = " +
+            fmt(parameters.statics.load_tolerance) + " in " +
+            std::to_string(max_load) + " load iterations: contact force " +
+            fmt(F1 * 1e-3) + " kN against the target " +
+            fmt(target * 1e-3) + " kN (relative error " +
+            fmt(std::abs(F1 - target) / target) + ", " +
+            fmt(std::abs(F0 - target) / target) +
+            " in the iteration before), axle lowered by " + fmt(d1 * 1e6) +
+            " um, " + fmt((d1 - gap) * 1e6) + " um beyond the initial gap. " +
+            (std::abs(F1 - F0) <= 2 * parameters.statics.load_tolerance * target ?
+               "The force has stopped changing: Load tolerance is finer than the Newton "
+               "solves resolve the force (Static solve/Newton tolerance, Linear solver "
+               "tolerance)." :
+               "The force still changes: the contact does not stiffen like a Hertzian "
+               "one (Contact/Penalty scale factor, or the contact set switching between "
+               "load iterations).")));
         // secant on F^(2/3), nearly linear in the approach for Hertz
         const double g0 = std::cbrt(F0 * F0) - std::cbrt(target * target);
         const double g1 = std::cbrt(F1 * F1) - std::cbrt(target * target);
-        const double d2 = (g1 != g0) ? d1 - g1 * (d1 - d0) / (g1 - g0) : d1 * 1.1;
+        const double d2 = (g1 != g0) ? d1 - g1 * (d1 - d0) / (g1 - g0) : gap + 1.1 * (d1 - gap);
         d0 = d1;
         F0 = F1;
-        d1 = d2 > 0 ? d2 : 0.5 * d1;
-        AssertThrow(k < 29,
-                    ExcMessage("The static contact solve did not reach Static solve/Axle load "
-                               "within Static solve/Load tolerance in 30 load iterations."));
+        d1 = d2 > gap ? d2 : gap + 0.5 * (d1 - gap);
       }
     result.axle_displacement = d1;
     result.contact_force     = F1;

@@ -149,6 +149,9 @@ namespace WheelRail
   {
     /** boundary id -> fixed components as a mask "xyz". */
     std::map<types::boundary_id, std::string> fixed;
+    /** Fixed boundaries holds its default (the rail's ids 11 and 12), which
+     *  the other geometries do not have: their runs ignore it. */
+    bool fixed_is_default = true;
     /** Boundary ids whose velocity is prescribed by the function below. */
     std::vector<types::boundary_id> prescribed_velocity_ids;
     /** Expression of the prescribed velocity, "vx; vy; vz" in (x,y,z,t). */
