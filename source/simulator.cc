@@ -1485,8 +1485,10 @@ namespace WheelRail
   Simulator::run_explicit()
   {
     const bool resume = parameters.output.resume;
-    // a resumed run takes its state from the checkpoint, read once the
-    // probes are set up
+    // the probes first: a probe point outside the mesh stops the run before
+    // the static start; a resumed run takes its state from the checkpoint,
+    // read once the probes are set up
+    setup_probe();
     if (!resume)
       {
         if (wheelset)
@@ -1499,7 +1501,6 @@ namespace WheelRail
         else
           apply_initial_conditions();
       }
-    setup_probe();
     if (resume)
       read_checkpoint();
     const double        dt      = solver->time_step();
