@@ -1789,6 +1789,10 @@ namespace WheelRail
                   << "  largest number of contact nodes " << max_contact << ", at the end "
                   << samples.back().n_contact << "; block velocity after "
                   << fmt(samples.back().block_momentum[2] / m_block, 4) << " m/s" << std::endl
+                  << "  deepest penetration of a slave at the step its contact began "
+                  << fmt(contact->deepest_new_contact() * 1e6, 2) << " um (initial speed x step "
+                  << fmt(std::abs(p0[2]) / m_block * solver->time_step() * 1e6, 2) << " um)"
+                  << std::endl
                   << "  energy: largest balance error " << fmt(max_balance_error, 2)
                   << ", (total end - total start) / start " << fmt((e1 - e0) / std::abs(e0), 2)
                   << std::endl
