@@ -1547,7 +1547,8 @@ namespace WheelRail
               << " ns wall)" << std::endl;
         report_timing(timed_seconds, output_seconds, n_steps - warmup, step_seconds);
         if (contact)
-          pcout << "  contact: " << contact->n_searches() << " candidate searches, "
+          pcout << "  contact: " << contact->n_searches() << " candidate searches ("
+                << contact->n_approach_searches() << " for the approach bound alone), "
                 << fmt(contact->search_seconds() / std::max(1u, contact->n_searches()) * 1e3, 3)
                 << " ms per search; at the last search " << contact->n_candidates().first
                 << " candidate slaves, " << contact->n_candidates().second
