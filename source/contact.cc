@@ -368,6 +368,11 @@ namespace WheelRail
     damping_loss  = 0;
     searches      = 0;
     search_time   = 0;
+    trigger_nodes.clear();
+    step_motion_known = false;
+    overlap_checked   = false;
+    approach_searches = 0;
+    new_contact_depth = 0;
   }
 
 
@@ -577,6 +582,7 @@ namespace WheelRail
         active_nodes.push_back(n);
     plan_gather(active_nodes, active_gather);
     build_normal_adjacency();
+    plan_approach_trigger();
     need_search        = false;
     steps_since_search = 0;
     ++searches;
@@ -773,17 +779,14 @@ namespace WheelRail
                              LinearAlgebra::distributed::Vector<double> &      f)
   {
     Clock::time_point clock = Clock::now();
-    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+    // the ranks meet here first after their element loops, in the reduction
+    // of the approach bound: what one waits for the other (imbalance, and
+    // the noise of single steps) is timed on its own
+    const bool approach = approach_bound_exceeded(u, advance, clock);
+    if (need_search || steps_since_search >= prm.search_interval || approach)
       {
-        // the ranks meet here first after their element loops: what one
-        // waits for the other (imbalance, and the noise of single steps)
-        // is timed on its own
-        const int ierr = MPI_Barrier(mpi_communicator);
-        AssertThrowMPI(ierr);
-        timing.wait += lap(clock);
-      }
-    if (need_search || steps_since_search >= prm.search_interval)
-      {
+        if (!need_search && steps_since_search < prm.search_interval)
+          ++approach_searches;
         search(u);
         timing.search += lap(clock);
       }
@@ -825,6 +828,11 @@ namespace WheelRail
       accumulate(pass, advance);
     if (totals.n_contact > 0)
       totals.relative_displacement /= totals.n_contact;
+    if (!overlap_checked)
+      {
+        overlap_checked = true;
+        check_initial_overlap();
+      }
 
     // forces on the owned DoFs, with the sign of internal forces
     for (const Pass &pass : passes)
@@ -939,6 +947,8 @@ namespace WheelRail
 
         const MasterFace &face = pass.faces[best_face];
         const double      k    = face.stiffness;
+        if (advance && state.face < 0)
+          new_contact_depth = std::max(new_contact_depth, -best_gap);
         state.in_contact       = true;
         state.normal           = best_n;
         state.normal_force     = -k * best_gap;
@@ -1220,5 +1230,9 @@ namespace WheelRail
     in.pod(searches);
     build_normal_adjacency();
     plan_gather(active_nodes, active_gather);
+    plan_approach_trigger();
+    // the motion of the last step before the checkpoint is not known here
+    step_motion_known = false;
+    overlap_checked   = true;
   }
 } // namespace WheelRail

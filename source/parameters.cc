@@ -705,6 +705,14 @@ namespace WheelRail
                       "The candidates are also rebuilt when a candidate node "
                       "has moved more than this fraction of the search margin "
                       "since the last rebuild [-], range [0.01, 1].");
+    prm.declare_entry("Initial overlap tolerance",
+                      "0",
+                      Patterns::Double(0, 0.01),
+                      "A slave node that penetrates its master face at the start "
+                      "deeper than the larger of this and 0.05 x the face's "
+                      "longest edge (the faceting of curved surfaces) stops the "
+                      "run: the bodies overlap as placed [m], range [0, 0.01]. "
+                      "Set it to start with a deliberate overlap.");
     prm.declare_entry("Friction law",
                       "exponential",
                       Patterns::Selection("none|constant|exponential"),
@@ -745,6 +753,7 @@ namespace WheelRail
     search_interval     = prm.get_integer("Search interval");
     search_margin       = prm.get_double("Search margin");
     rebuild_fraction    = prm.get_double("Rebuild fraction");
+    initial_overlap_tolerance = prm.get_double("Initial overlap tolerance");
     friction_law        = prm.get("Friction law");
     static_coefficient  = prm.get_double("Static friction coefficient");
     dynamic_coefficient = prm.get_double("Dynamic friction coefficient");

@@ -1656,7 +1656,8 @@ namespace WheelRail
               << " ns wall)" << std::endl;
         report_timing(timed_seconds, output_seconds, n_steps - warmup, step_seconds);
         if (contact)
-          pcout << "  contact: " << contact->n_searches() << " candidate searches, "
+          pcout << "  contact: " << contact->n_searches() << " candidate searches ("
+                << contact->n_approach_searches() << " for the approach bound alone), "
                 << fmt(contact->search_seconds() / std::max(1u, contact->n_searches()) * 1e3, 3)
                 << " ms per search; at the last search " << contact->n_candidates().first
                 << " candidate slaves, " << contact->n_candidates().second
@@ -1898,6 +1899,10 @@ namespace WheelRail
                   << "  largest number of contact nodes " << max_contact << ", at the end "
                   << samples.back().n_contact << "; block velocity after "
                   << fmt(samples.back().block_momentum[2] / m_block, 4) << " m/s" << std::endl
+                  << "  deepest penetration of a slave at the step its contact began "
+                  << fmt(contact->deepest_new_contact() * 1e6, 2) << " um (initial speed x step "
+                  << fmt(std::abs(p0[2]) / m_block * solver->time_step() * 1e6, 2) << " um)"
+                  << std::endl
                   << "  energy: largest balance error " << fmt(max_balance_error, 2)
                   << ", (total end - total start) / start " << fmt((e1 - e0) / std::abs(e0), 2)
                   << std::endl

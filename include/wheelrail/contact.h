@@ -31,6 +31,7 @@
 #include <wheelrail/checkpoint.h>
 #include <wheelrail/friction_law.h>
 #include <wheelrail/parameters.h>
+#include <wheelrail/stopwatch.h>
 
 #include <memory>
 #include <vector>
@@ -213,6 +214,22 @@ namespace WheelRail
         }
       return n;
     }
+    /** Searches so far that the approach bound (contact_trigger.cc)
+     *  called for, and no other trigger. */
+    unsigned int
+    n_approach_searches() const
+    {
+      return approach_searches;
+    }
+    /**
+     * The deepest penetration [m] that a slave node had at the step its
+     * contact began (a slave found in contact that was not at the step
+     * before), over all steps so far and all ranks. A search that never
+     * misses an approaching body finds every contact within about one
+     * step's relative motion of the surfaces. Collective.
+     */
+    double
+    deepest_new_contact() const;
     /** Wall seconds spent in searches (candidate rebuilds) so far. */
     double
     search_seconds() const
@@ -297,6 +314,29 @@ namespace WheelRail
     all_gather_concatenated(const std::vector<T> &send, const MPI_Datatype type, std::vector<T> &recv);
     void
     search(const LinearAlgebra::distributed::Vector<double> &u);
+    /** The clearances and motion allowances of this rank's contact nodes
+     *  for approach_bound_exceeded(), from the positions at the last
+     *  search (contact_trigger.cc). */
+    void
+    plan_approach_trigger();
+    /**
+     * Whether a slave and a master face that are not candidates could have
+     * come closer than (1 - Rebuild fraction) x Search margin since the last
+     * search, judged from this step's motion of all contact nodes; reduced
+     * over the ranks (one allreduce, where the ranks meet after their
+     * element loops). Stops the run when the nodes move too far in one step
+     * for any search to see a crossing. The local part is timed in
+     * @p clock as positions, the reduction as wait.
+     */
+    bool
+    approach_bound_exceeded(const LinearAlgebra::distributed::Vector<double> &u,
+                            const bool                                        advance,
+                            Clock::time_point &                               clock);
+    /** At the first evaluation after setup(): stop the run when a slave
+     *  penetrates its master face deeper than the faceting of the surfaces
+     *  explains (contact_trigger.cc). */
+    void
+    check_initial_overlap() const;
     /** The FaceBound of face @p f of @p pass at the current positions,
      *  computed at its first use in this evaluation. */
     const FaceBound &
@@ -366,6 +406,22 @@ namespace WheelRail
     std::vector<unsigned int>            active_nodes;  ///< gathered every step
     GatherPlan                           all_gather, active_gather;
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
+
+    /** A contact node owned by this rank, for approach_bound_exceeded(). */
+    struct TriggerNode
+    {
+      unsigned int   local_dof; ///< first local DoF
+      Tensor<1, dim> u_search;  ///< x - X at the last search
+      Tensor<1, dim> dx;        ///< x - x_search at the last evaluation
+      /** Motion allowance e [m] as slave (2 p) and as master-face corner
+       *  (2 p + 1) of pass p; the largest double where it has no role. */
+      double e[4];
+    };
+    std::vector<TriggerNode> trigger_nodes; ///< ascending local DoFs
+    bool                     step_motion_known = false; ///< TriggerNode::dx is of the last step
+    bool                     overlap_checked   = false; ///< check_initial_overlap() done
+    unsigned int             approach_searches = 0;
+    double                   new_contact_depth = 0; ///< this rank's block, see deepest_new_contact()
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
     std::vector<double>           exchange_gaps;   ///< (in contact, gap) per candidate

@@ -184,6 +184,7 @@ namespace WheelRail
     unsigned int       search_interval;
     double             search_margin;
     double             rebuild_fraction;
+    double             initial_overlap_tolerance; ///< [m], see check_initial_overlap()
     std::string        friction_law;
     double             static_coefficient;
     double             dynamic_coefficient;
