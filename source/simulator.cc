@@ -117,6 +117,10 @@ namespace WheelRail
   void
   Simulator::prepare_output_directory()
   {
+    // a resumed run continues in its directory: none means a wrong name
+    AssertThrow(!parameters.output.resume || std::filesystem::is_directory(output_directory),
+                ExcMessage("--resume: Problem/Output directory '" + output_directory +
+                           "' does not exist: no checkpoint to resume from."));
     int ok = 1;
     std::string message;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)

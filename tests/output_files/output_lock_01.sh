@@ -39,7 +39,7 @@ for i in $(seq 1 1000); do
   kill -0 $pid 2> /dev/null || break
   sleep 0.01
 done
-kill -STOP $pid || fail "the first run ended before it was paused"
+kill -STOP $pid 2> /dev/null || fail "the first run ended before it was paused (it wrote no lock note into run/.wheelrail.lock)"
 grep -q "^pid $pid on host " run/.wheelrail.lock || fail "no lock note of the first run"
 snapshot run all > before.md5
 
