@@ -5,7 +5,8 @@
 # the directory and the first run's pid, with a non-zero exit status and
 # nothing in the directory changed; the first run, continued, must end as
 # the same case run alone. Then a run rejected at setup (a time step above
-# the stable step) must leave the directory's files as they were.
+# the stable step) must leave the directory's files as they were, and a
+# run killed with SIGKILL must leave no stale lock.
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
@@ -69,3 +70,20 @@ grep -o "Error: Time integration/Time step = 1.6e-06 s exceeds the stable step" 
 snapshot run > after.md5
 cmp -s before.md5 after.md5 || fail "the rejected run changed the directory"
 echo "rejected run: the directory unchanged"
+
+# a run killed with SIGKILL leaves no stale lock: the next run goes ahead
+{ cat first.prm; printf 'subsection Problem\n  set Output directory = killed\nend\n'; } > killed.prm
+{ cat killed.prm; printf 'subsection Problem\n  set Dry run = true\nend\n'; } > after_kill.prm
+rm -rf killed
+"$exe" killed.prm > killed.log 2>&1 &
+pid=$!
+for i in $(seq 1 1000); do
+  grep -qs "^pid $pid " killed/.wheelrail.lock && break
+  kill -0 $pid 2> /dev/null || break
+  sleep 0.01
+done
+kill -KILL $pid 2> /dev/null || fail "the run to be killed ended before"
+if wait $pid; then fail "the run was not killed"; fi
+"$exe" after_kill.prm > after_kill.log 2>&1 || { cat after_kill.log; fail "the run after a killed one was refused"; }
+grep -q "^pid $pid " killed/.wheelrail.lock && fail "the lock note still names the killed run"
+echo "after kill -9: the next run took the lock"
