@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/checkpoint.h>
 #include <wheelrail/parameter_file.h>
 #include <wheelrail/parameters.h>
 
@@ -951,6 +952,9 @@ namespace WheelRail
   void
   OutputParameters::declare_parameters(ParameterHandler &prm)
   {
+    std::string resumable;
+    for (const std::string &entry : Checkpoint::resumable_entries())
+      resumable += (resumable.empty() ? "" : ", ") + entry;
     prm.enter_subsection("Output");
     prm.declare_entry("Report interval",
                       "1000",
@@ -998,7 +1002,10 @@ namespace WheelRail
                       "one file per rank) holds all vectors, the contact and "
                       "friction state, axle and suspension, statistics and "
                       "probes; 'wheelrail CASE.prm --resume' continues from "
-                      "it with the same rank count.");
+                      "it with the same rank count. Each rank file records "
+                      "every parameter and a CRC-32 checksum: a resumed run "
+                      "stops on a damaged file, and on any changed entry but "
+                      "these (which it lists): " + resumable + ".");
     prm.declare_entry("Checkpoint minutes",
                       "0",
                       Patterns::Double(0, 1e6),
@@ -1014,7 +1021,8 @@ namespace WheelRail
                       "false",
                       Patterns::Bool(),
                       "Continue from the checkpoint in the output directory "
-                      "(the same as the command line flag --resume).");
+                      "(the same as the command line flag --resume); see "
+                      "Checkpoint interval for what may change.");
     prm.declare_entry("Timing warm-up steps",
                       "0",
                       Patterns::Integer(0, 1000000000),

@@ -5,9 +5,6 @@
 
 #include <deal.II/numerics/data_out.h>
 
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
-
 #include <wheelrail/geometry.h>
 #include <wheelrail/hertz.h>
 #include <wheelrail/simulator.h>
@@ -25,6 +22,15 @@ namespace WheelRail
 {
   namespace
   {
+    /** The parameters as ParameterHandler prints them in @p style. */
+    std::string
+    print_parameters(const ParameterHandler &prm, const ParameterHandler::OutputStyle style)
+    {
+      std::ostringstream out;
+      prm.print_parameters(out, style);
+      return out.str();
+    }
+
     /** Fixed-width number for reports: @p digits significant digits. */
     std::string
     fmt(const double x, const unsigned int digits = 6)
@@ -75,12 +81,14 @@ namespace WheelRail
                        const ParameterHandler &prm,
                        MPI_Comm                comm)
     : parameters(parameters)
+    , parameter_file(print_parameters(prm, ParameterHandler::PRM))
+    , parameter_record(print_parameters(prm, ParameterHandler::ShortPRM))
     , mpi_communicator(comm)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
     , triangulation(comm)
     , output_directory(parameters.problem.output_directory)
   {
-    prepare_output_directory(prm);
+    prepare_output_directory();
   }
 
 
@@ -101,25 +109,18 @@ namespace WheelRail
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
-    const std::string path = output_directory + "/" + name;
-    const std::string tmp  = path + ".tmp";
-    {
-      std::ofstream out(tmp);
-      out << content;
-      out.flush();
-      AssertThrow(out.good(),
-                  ExcMessage("Cannot write '" + tmp + "' (disk full or no permission)."));
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    AssertThrow(!ec, ExcMessage("Cannot rename '" + tmp + "' to '" + path + "': " + ec.message()));
+    write_file_atomically(output_directory + "/" + name, content);
   }
 
 
 
   void
-  Simulator::prepare_output_directory(const ParameterHandler &prm) const
+  Simulator::prepare_output_directory()
   {
+    // a resumed run continues in its directory: none means a wrong name
+    AssertThrow(!parameters.output.resume || std::filesystem::is_directory(output_directory),
+                ExcMessage("--resume: Problem/Output directory '" + output_directory +
+                           "' does not exist: no checkpoint to resume from."));
     int ok = 1;
     std::string message;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
@@ -136,9 +137,22 @@ namespace WheelRail
     AssertThrow(ok,
                 ExcMessage("Cannot create Problem/Output directory '" + output_directory +
                            "': " + message));
-    std::ostringstream parsed;
-    prm.print_parameters(parsed, ParameterHandler::PRM);
-    write_file("parameters.prm", parsed.str());
+    // rank 0 holds the lock; a directory in use stops every rank
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      try
+        {
+          lock = std::make_unique<DirectoryLock>(output_directory, "Problem/Output directory");
+          if (!lock->warning().empty())
+            std::cerr << "Warning: " << lock->warning() << std::endl;
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          error = info.str();
+        }
+    throw_first_error(error, mpi_communicator);
   }
 
 
@@ -151,6 +165,8 @@ namespace WheelRail
     if (!parameters.problem.test_mode)
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator) << " MPI rank(s)";
     pcout << std::endl;
+    if (parameters.output.resume)
+      check_checkpoint();
 
     Geometry::build(parameters.geometry, parameters.problem.geometry, triangulation);
     solver = std::make_unique<ExplicitSolver>(parameters, triangulation);
@@ -183,6 +199,9 @@ namespace WheelRail
     else
       solver->set_time_step(solver->stable_time_step());
 
+    // the setup has succeeded: from here on the run owns the directory's
+    // files (a rejected run leaves the previous run's parameters.prm)
+    write_file("parameters.prm", parameter_file);
     print_setup_summary();
     if (parameters.problem.dry_run)
       {
@@ -983,14 +1002,7 @@ namespace WheelRail
             out << '\n';
           }
         // written by the owner rank: not through write_file (rank 0 only)
-        const std::string path = output_directory + "/" + probe.file;
-        {
-          std::ofstream file(path + ".tmp");
-          file << out.str();
-          file.flush();
-          AssertThrow(file.good(), ExcMessage("Cannot write '" + path + ".tmp'."));
-        }
-        std::filesystem::rename(path + ".tmp", path);
+        write_file_atomically(output_directory + "/" + probe.file, out.str());
       }
   }
 
@@ -1037,8 +1049,8 @@ namespace WheelRail
                                level == "none" ? DataOutBase::VtkFlags::no_compression :
                                                  DataOutBase::VtkFlags::best_speed;
     data_out.set_flags(flags);
-    const std::string name = data_out.write_vtu_with_pvtu_record(
-      output_directory + "/", "solution", vtu_counter++, mpi_communicator, 5);
+    const std::string name = write_vtu_with_pvtu_record(
+      data_out, output_directory + "/", "solution", vtu_counter++, 5, mpi_communicator);
     vtu_records.emplace_back(solver->time(), name);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, vtu_records);
@@ -1190,179 +1202,6 @@ namespace WheelRail
       csv << "," << spread[i];
     csv << "\n";
     write_file("timing.csv", csv.str());
-  }
-
-
-
-  void
-  Simulator::write_checkpoint()
-  {
-    // every rank writes its part into checkpoint.new/, then rank 0 swaps
-    // it for checkpoint/: the previous checkpoint stays until the new one
-    // is complete
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const std::string  fresh  = output_directory + "/checkpoint.new";
-    const std::string  target = output_directory + "/checkpoint";
-    const std::string  old    = output_directory + "/checkpoint.old";
-    if (rank == 0)
-      {
-        std::filesystem::remove_all(fresh);
-        std::filesystem::create_directories(fresh);
-      }
-    MPI_Barrier(mpi_communicator);
-    int ok = 1;
-    {
-      const std::string name = fresh + "/rank_" + std::to_string(rank) + ".bin";
-      std::ofstream     file(name, std::ios::binary);
-      Checkpoint::Writer out(file);
-      out.pod(checkpoint_magic);
-      out.pod(ranks);
-      out.pod(triangulation.n_global_active_cells());
-      out.pod(solver->get_dof_handler().n_dofs());
-      solver->save(out);
-      out.pod(contact != nullptr);
-      if (contact)
-        contact->save(out);
-      out.pod(wheelset != nullptr);
-      if (wheelset)
-        wheelset->save(out);
-      std::ostringstream table;
-      {
-        boost::archive::binary_oarchive archive(table);
-        archive << statistics;
-      }
-      out.string(table.str());
-      out.pod<std::uint64_t>(vtu_records.size());
-      for (const auto &r : vtu_records)
-        {
-          out.pod(r.first);
-          out.string(r.second);
-        }
-      out.pod(vtu_counter);
-      out.pod<std::uint64_t>(probes.size());
-      for (const Probe &probe : probes)
-        out.vector(probe.history);
-      out.pod(previous_patch_centre);
-      out.pod(next_snapshot);
-      out.pod(initial_energies);
-      out.pod(have_initial_energies);
-      out.pod(max_balance_error);
-      out.pod(hourglass_time_integral);
-      out.pod(hourglass_ref_time_integral);
-      out.pod(internal_time_integral);
-      out.pod(max_hourglass_ratio_actual);
-      out.vector(samples);
-      out.pod(friction_violations);
-      out.pod(most_contact_nodes);
-      out.pod(checkpoint_magic);
-      file.flush();
-      ok = file.good() ? 1 : 0;
-    }
-    ok = Utilities::MPI::min(ok, mpi_communicator);
-    AssertThrow(ok,
-                ExcMessage("Cannot write the checkpoint in '" + fresh +
-                           "' (disk full or no permission); the previous checkpoint is kept."));
-    if (rank == 0)
-      {
-        std::ofstream info(fresh + "/info");
-        info << "wheelrail checkpoint: step " << solver->step_number() << ", t = "
-             << solver->time() << " s, " << ranks << " rank(s)\n";
-        info.flush();
-        AssertThrow(info.good(), ExcMessage("Cannot write '" + fresh + "/info'."));
-        info.close();
-        std::filesystem::remove_all(old);
-        if (std::filesystem::exists(target))
-          std::filesystem::rename(target, old);
-        std::filesystem::rename(fresh, target);
-        std::filesystem::remove_all(old);
-      }
-    MPI_Barrier(mpi_communicator);
-  }
-
-
-
-  void
-  Simulator::read_checkpoint()
-  {
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    // checkpoint.old exists only if a run died between the two renames
-    std::string directory = output_directory + "/checkpoint";
-    if (!std::filesystem::exists(directory + "/info") &&
-        std::filesystem::exists(output_directory + "/checkpoint.old/info"))
-      directory = output_directory + "/checkpoint.old";
-    const std::string name = directory + "/rank_" + std::to_string(rank) + ".bin";
-    std::ifstream     file(name, std::ios::binary);
-    AssertThrow(file.good(),
-                ExcMessage("--resume: no checkpoint '" + name +
-                           "' (Output/Checkpoint interval or minutes write one; the rank count "
-                           "must be the one of the run that wrote it)."));
-    Checkpoint::Reader in(file, name);
-    std::uint64_t      magic = 0;
-    in.pod(magic);
-    AssertThrow(magic == checkpoint_magic, ExcMessage("'" + name + "' is not a wheelrail checkpoint."));
-    unsigned int                 stored_ranks = 0;
-    types::global_cell_index     cells        = 0;
-    types::global_dof_index      dofs         = 0;
-    in.pod(stored_ranks);
-    in.pod(cells);
-    in.pod(dofs);
-    AssertThrow(stored_ranks == ranks && cells == triangulation.n_global_active_cells() &&
-                  dofs == solver->get_dof_handler().n_dofs(),
-                ExcMessage("The checkpoint in '" + directory + "' was written by a run with " +
-                           std::to_string(stored_ranks) + " rank(s), " + std::to_string(cells) +
-                           " cells and " + std::to_string(dofs) + " DoFs; this run has " +
-                           std::to_string(ranks) + ", " +
-                           std::to_string(triangulation.n_global_active_cells()) + " and " +
-                           std::to_string(solver->get_dof_handler().n_dofs()) +
-                           ": resume with the same parameters and rank count."));
-    solver->load(in);
-    bool has = false;
-    in.pod(has);
-    AssertThrow(has == (contact != nullptr), ExcMessage("The checkpoint's contact setting differs."));
-    if (contact)
-      contact->load(in);
-    in.pod(has);
-    AssertThrow(has == (wheelset != nullptr), ExcMessage("The checkpoint's wheelset setting differs."));
-    if (wheelset)
-      wheelset->load(in);
-    std::string table;
-    in.string(table);
-    {
-      std::istringstream              stream(table);
-      boost::archive::binary_iarchive archive(stream);
-      archive >> statistics;
-    }
-    std::uint64_t n = 0;
-    in.pod(n);
-    vtu_records.resize(n);
-    for (auto &r : vtu_records)
-      {
-        in.pod(r.first);
-        in.string(r.second);
-      }
-    in.pod(vtu_counter);
-    in.pod(n);
-    AssertThrow(n == probes.size(), ExcMessage("The checkpoint's probes differ."));
-    for (Probe &probe : probes)
-      in.vector(probe.history);
-    in.pod(previous_patch_centre);
-    in.pod(next_snapshot);
-    in.pod(initial_energies);
-    in.pod(have_initial_energies);
-    in.pod(max_balance_error);
-    in.pod(hourglass_time_integral);
-    in.pod(hourglass_ref_time_integral);
-    in.pod(internal_time_integral);
-    in.pod(max_hourglass_ratio_actual);
-    in.vector(samples);
-    in.pod(friction_violations);
-    in.pod(most_contact_nodes);
-    in.pod(magic);
-    AssertThrow(magic == checkpoint_magic, ExcMessage("The checkpoint '" + name + "' is corrupt."));
-    pcout << "Resumed from " << directory << " at step " << solver->step_number()
-          << ", t = " << fmt(solver->time() * 1e3) << " ms" << std::endl;
   }
 
 

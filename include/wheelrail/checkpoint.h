@@ -3,17 +3,29 @@
  * Binary checkpoint streams: each rank writes the state it owns (vectors,
  * contact and friction state, axle, statistics) in a fixed order and reads
  * it back in the same order. Only trivially copyable values and vectors of
- * them go in raw; a restart needs the same executable and rank count (the
- * header records them and read_header() checks).
+ * them go in raw; a restart needs the same executable and rank count.
+ *
+ * A rank file is: the magic number, the Header (rank count, mesh size,
+ * step, time, time step and every parameter with its value), the state,
+ * and a trailer (the number of bytes before it, their CRC-32, an end
+ * marker). verify() checks the trailer before anything is read, so that a
+ * damaged, truncated or older file stops a resumed run naming the file;
+ * compare_parameters() says which entries differ from the run that wrote
+ * the checkpoint, and resumable_entries() which of them may.
  */
 #ifndef wheelrail_checkpoint_h
 #define wheelrail_checkpoint_h
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/types.h>
+
+#include <boost/crc.hpp>
 
 #include <cstdint>
 #include <istream>
+#include <map>
 #include <ostream>
+#include <set>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -22,7 +34,17 @@ namespace WheelRail
 {
   namespace Checkpoint
   {
-    /** Appends values to a binary stream. */
+    /** First 8 bytes of a rank file of the current format ("whlrchp2"). */
+    constexpr std::uint64_t magic = 0x77686c7263687032ull;
+    /** ... of the format before the checksum and parameter record. */
+    constexpr std::uint64_t magic_version_1 = 0x77686c7263687031ull;
+    /** Last 8 bytes of a complete rank file ("whlrend2"). */
+    constexpr std::uint64_t end_marker = 0x77686c72656e6432ull;
+    /** Bytes of the trailer: payload size, CRC-32 (as 8 bytes), end marker. */
+    constexpr std::uint64_t trailer_size = 24;
+
+    /** Appends values to a binary stream and keeps the CRC-32 of all
+     *  bytes written; finish() appends the trailer. */
     class Writer
     {
     public:
@@ -35,7 +57,7 @@ namespace WheelRail
       pod(const T &value)
       {
         static_assert(std::is_trivially_copyable_v<T>, "raw values only");
-        out.write(reinterpret_cast<const char *>(&value), sizeof(T));
+        write(reinterpret_cast<const char *>(&value), sizeof(T));
       }
 
       template <typename T>
@@ -44,14 +66,14 @@ namespace WheelRail
       {
         static_assert(std::is_trivially_copyable_v<T>, "raw values only");
         pod<std::uint64_t>(values.size());
-        out.write(reinterpret_cast<const char *>(values.data()), values.size() * sizeof(T));
+        write(reinterpret_cast<const char *>(values.data()), values.size() * sizeof(T));
       }
 
       void
       string(const std::string &s)
       {
         pod<std::uint64_t>(s.size());
-        out.write(s.data(), s.size());
+        write(s.data(), s.size());
       }
 
       /** Raw array of @p n values (e.g. the owned part of a vector). */
@@ -59,7 +81,16 @@ namespace WheelRail
       array(const double *values, const std::uint64_t n)
       {
         pod(n);
-        out.write(reinterpret_cast<const char *>(values), n * sizeof(double));
+        write(reinterpret_cast<const char *>(values), n * sizeof(double));
+      }
+
+      /** Append the trailer (size and CRC-32 of everything written so
+       *  far, end marker); nothing may be written after it. */
+      void
+      finish()
+      {
+        const std::uint64_t trailer[3] = {bytes, crc.checksum(), end_marker};
+        out.write(reinterpret_cast<const char *>(trailer), sizeof(trailer));
       }
 
       bool
@@ -69,7 +100,17 @@ namespace WheelRail
       }
 
     private:
-      std::ostream &out;
+      void
+      write(const char *data, const std::uint64_t n)
+      {
+        out.write(data, n);
+        crc.process_bytes(data, n);
+        bytes += n;
+      }
+
+      std::ostream &    out;
+      boost::crc_32_type crc;
+      std::uint64_t     bytes = 0;
     };
 
     /** Reads values in the order a Writer wrote them. */
@@ -141,6 +182,61 @@ namespace WheelRail
       std::istream &    in;
       const std::string name;
     };
+
+    /** What a rank file records before the state. */
+    struct Header
+    {
+      unsigned int              ranks = 0;
+      dealii::types::global_cell_index cells = 0;
+      dealii::types::global_dof_index  dofs  = 0;
+      unsigned long             step      = 0;
+      double                    time      = 0;
+      double                    time_step = 0;
+      /** Every parameter as ParameterHandler::ShortPRM prints it. */
+      std::string parameters;
+    };
+
+    /** Write the magic number and @p header. */
+    void
+    write_header(Writer &out, const Header &header);
+
+    /** Read what write_header() wrote (the magic number is checked). */
+    Header
+    read_header(Reader &in, const std::string &name);
+
+    /** Check the rank file @p name before it is read: it exists, has the
+     *  current format, is complete and its CRC-32 matches. Returns an
+     *  empty string, or the reason naming the file. */
+    std::string
+    verify(const std::string &name);
+
+    /** The entries of ParameterHandler::ShortPRM text as
+     *  "Section/Subsection/Entry" -> value. */
+    std::map<std::string, std::string>
+    parameter_entries(const std::string &short_prm);
+
+    /** The entries that may differ between the run that wrote a
+     *  checkpoint and the run that resumes it: they change when and what is
+     *  written, where the run stops and the verdict thresholds, but not
+     *  the state that is integrated. */
+    const std::set<std::string> &
+    resumable_entries();
+
+    /** One entry whose value differs. */
+    struct Change
+    {
+      std::string entry, old_value, new_value;
+    };
+
+    /** Differences between the parameter records @p old_record and
+     *  @p new_record (ShortPRM text): @p allowed gets those listed in
+     *  resumable_entries(), @p refused all others (an entry present in
+     *  only one of them has the value "(not declared)" in the other). */
+    void
+    compare_parameters(const std::string & old_record,
+                       const std::string & new_record,
+                       std::vector<Change> &allowed,
+                       std::vector<Change> &refused);
   } // namespace Checkpoint
 } // namespace WheelRail
 

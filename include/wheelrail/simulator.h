@@ -13,6 +13,7 @@
 
 #include <wheelrail/contact.h>
 #include <wheelrail/explicit_solver.h>
+#include <wheelrail/output_files.h>
 #include <wheelrail/parameters.h>
 
 #include <memory>
@@ -36,8 +37,10 @@ namespace WheelRail
     run();
 
   private:
+    /** Create the output directory and lock it (DirectoryLock); nothing
+     *  is written there before the setup has succeeded. */
     void
-    prepare_output_directory(const ParameterHandler &prm) const;
+    prepare_output_directory();
     void
     print_setup_summary();
     void
@@ -72,13 +75,21 @@ namespace WheelRail
     }
     /** Write the whole run state to OUTDIR/checkpoint/ (write, then
      *  rename: the previous checkpoint stays until the new one is
-     *  complete). */
+     *  complete). In simulator_checkpoint.cc, as the two below. */
     void
     write_checkpoint();
-    /** Read it back (wheelrail CASE.prm --resume). */
+    /** Before the setup of a resumed run: every rank file is complete and
+     *  its checksum matches, the rank count is the checkpoint's, and no
+     *  parameter other than Checkpoint::resumable_entries() differs from
+     *  the run that wrote it (those that do are listed). */
+    void
+    check_checkpoint();
+    /** Read the state back (wheelrail CASE.prm --resume). */
     void
     read_checkpoint();
-    static constexpr std::uint64_t checkpoint_magic = 0x77686c7263687031ull; // "whlrchp1"
+    /** OUTDIR/checkpoint, or checkpoint.old if a run died between the
+     *  two renames of write_checkpoint(); set by check_checkpoint(). */
+    std::string checkpoint_directory;
 
     /** Where and why a run diverged (all ranks call it): @p velocity_spread
      *  is the largest spread of a velocity component over the nodes at the
@@ -119,6 +130,10 @@ namespace WheelRail
     write_file(const std::string &name, const std::string &content) const;
 
     const Parameters &                        parameters;
+    /** The parameter file as parsed: for OUTDIR/parameters.prm (with the
+     *  documentation) and for the checkpoints (ShortPRM). */
+    const std::string                         parameter_file;
+    const std::string                         parameter_record;
     MPI_Comm                                  mpi_communicator;
     ConditionalOStream                        pcout;
     parallel::distributed::Triangulation<dim> triangulation;
@@ -126,6 +141,8 @@ namespace WheelRail
     std::unique_ptr<PenaltyContact>           contact;
     std::unique_ptr<Wheelset>                 wheelset;
     std::string                               output_directory;
+    /** Held by rank 0 from the start to the end of the run. */
+    std::unique_ptr<DirectoryLock>            lock;
 
     TableHandler statistics;
     std::vector<std::pair<double, std::string>> vtu_records;

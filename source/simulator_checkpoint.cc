@@ -1,0 +1,284 @@
+/**
+ * The checkpoint of an explicit run: Simulator::write_checkpoint(),
+ * check_checkpoint() and read_checkpoint(). The file format is in
+ * checkpoint.h.
+ */
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
+#include <wheelrail/checkpoint.h>
+#include <wheelrail/simulator.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace WheelRail
+{
+  namespace
+  {
+    std::string
+    fmt(const double x, const unsigned int digits = 6)
+    {
+      std::ostringstream s;
+      s << std::setprecision(digits) << x;
+      return s.str();
+    }
+
+    std::string
+    rank_file(const std::string &directory, const unsigned int rank)
+    {
+      return directory + "/rank_" + std::to_string(rank) + ".bin";
+    }
+  } // namespace
+
+
+
+  void
+  Simulator::write_checkpoint()
+  {
+    // every rank writes its part into checkpoint.new/, then rank 0 swaps
+    // it for checkpoint/: the previous checkpoint stays until the new one
+    // is complete
+    const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const std::string  fresh  = output_directory + "/checkpoint.new";
+    const std::string  target = output_directory + "/checkpoint";
+    const std::string  old    = output_directory + "/checkpoint.old";
+    if (rank == 0)
+      {
+        std::filesystem::remove_all(fresh);
+        std::filesystem::create_directories(fresh);
+      }
+    MPI_Barrier(mpi_communicator);
+    int ok = 1;
+    {
+      std::ofstream      file(rank_file(fresh, rank), std::ios::binary);
+      Checkpoint::Writer out(file);
+      Checkpoint::Header header;
+      header.ranks      = ranks;
+      header.cells      = triangulation.n_global_active_cells();
+      header.dofs       = solver->get_dof_handler().n_dofs();
+      header.step       = solver->step_number();
+      header.time       = solver->time();
+      header.time_step  = solver->time_step();
+      header.parameters = parameter_record;
+      Checkpoint::write_header(out, header);
+      solver->save(out);
+      out.pod(contact != nullptr);
+      if (contact)
+        contact->save(out);
+      out.pod(wheelset != nullptr);
+      if (wheelset)
+        wheelset->save(out);
+      std::ostringstream table;
+      {
+        boost::archive::binary_oarchive archive(table);
+        archive << statistics;
+      }
+      out.string(table.str());
+      out.pod<std::uint64_t>(vtu_records.size());
+      for (const auto &r : vtu_records)
+        {
+          out.pod(r.first);
+          out.string(r.second);
+        }
+      out.pod(vtu_counter);
+      out.pod<std::uint64_t>(probes.size());
+      for (const Probe &probe : probes)
+        out.vector(probe.history);
+      out.pod(previous_patch_centre);
+      out.pod(next_snapshot);
+      out.pod(initial_energies);
+      out.pod(have_initial_energies);
+      out.pod(max_balance_error);
+      out.pod(hourglass_time_integral);
+      out.pod(hourglass_ref_time_integral);
+      out.pod(internal_time_integral);
+      out.pod(max_hourglass_ratio_actual);
+      out.vector(samples);
+      out.pod(friction_violations);
+      out.pod(most_contact_nodes);
+      out.pod(Checkpoint::magic);
+      out.finish();
+      file.flush();
+      ok = file.good() ? 1 : 0;
+    }
+    ok = Utilities::MPI::min(ok, mpi_communicator);
+    AssertThrow(ok,
+                ExcMessage("Cannot write the checkpoint in '" + fresh +
+                           "' (disk full or no permission); the previous checkpoint is kept."));
+    if (rank == 0)
+      {
+        std::ofstream info(fresh + "/info");
+        info << "wheelrail checkpoint: step " << solver->step_number() << ", t = "
+             << solver->time() << " s, " << ranks << " rank(s)\n";
+        info.flush();
+        AssertThrow(info.good(), ExcMessage("Cannot write '" + fresh + "/info'."));
+        info.close();
+        std::filesystem::remove_all(old);
+        if (std::filesystem::exists(target))
+          std::filesystem::rename(target, old);
+        std::filesystem::rename(fresh, target);
+        std::filesystem::remove_all(old);
+      }
+    MPI_Barrier(mpi_communicator);
+  }
+
+
+
+  void
+  Simulator::check_checkpoint()
+  {
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    // checkpoint.old exists only if a run died between the two renames
+    checkpoint_directory = output_directory + "/checkpoint";
+    if (!std::filesystem::exists(checkpoint_directory + "/info") &&
+        std::filesystem::exists(output_directory + "/checkpoint.old/info"))
+      checkpoint_directory = output_directory + "/checkpoint.old";
+    const std::string name = rank_file(checkpoint_directory, rank);
+
+    // each rank its own file; the first rank with a problem tells, but
+    // another rank count comes first (rank 0's file says)
+    std::string        error = Checkpoint::verify(name);
+    Checkpoint::Header header;
+    if (error.empty())
+      {
+        std::ifstream      file(name, std::ios::binary);
+        Checkpoint::Reader in(file, name);
+        header = Checkpoint::read_header(in, name);
+      }
+    const unsigned int stored_ranks =
+      Utilities::MPI::broadcast(mpi_communicator, error.empty() ? header.ranks : 0u, 0);
+    if (stored_ranks != 0 && stored_ranks != ranks)
+      error = "the checkpoint in '" + checkpoint_directory + "' was written by " +
+              std::to_string(stored_ranks) + " MPI rank(s); resume it with as many (this run has " +
+              std::to_string(ranks) + ")";
+    if (!error.empty())
+      error = "--resume: " + error + ".";
+    if (error.find("no checkpoint file") != std::string::npos)
+      error += " Output/Checkpoint interval, Checkpoint minutes or Stop after step write one "
+               "in Problem/Output directory.";
+    throw_first_error(error, mpi_communicator);
+
+    // the parameters: the same on every rank, so every rank decides alike
+    std::vector<Checkpoint::Change> allowed, refused;
+    Checkpoint::compare_parameters(header.parameters, parameter_record, allowed, refused);
+    if (!refused.empty())
+      {
+        std::string message = "--resume: the checkpoint in '" + checkpoint_directory +
+                              "' was written with other values of " +
+                              std::to_string(refused.size()) +
+                              " entr" + (refused.size() == 1 ? "y" : "ies") +
+                              " that change the computed state (checkpoint -> this run):";
+        for (const auto &c : refused)
+          message += "\n" + c.entry + ": " + c.old_value + " -> " + c.new_value;
+        message += "\nResume with the checkpoint's values, or start the run again. Only these "
+                   "entries may change on resume:";
+        for (const auto &entry : Checkpoint::resumable_entries())
+          message += " " + entry + (entry == *Checkpoint::resumable_entries().rbegin() ? "." : ",");
+        AssertThrow(false, ExcMessage(message));
+      }
+
+    // a resumed run must have steps left
+    const unsigned long n_steps =
+      static_cast<unsigned long>(std::ceil(parameters.solver.end_time / header.time_step - 1e-9));
+    AssertThrow(n_steps > header.step,
+                ExcMessage("--resume: Time integration/End time = " +
+                           fmt(parameters.solver.end_time) + " s is reached at step " +
+                           std::to_string(n_steps) + ", and the checkpoint in '" +
+                           checkpoint_directory + "' is at step " + std::to_string(header.step) +
+                           " (t = " + fmt(header.time) +
+                           " s): nothing to resume. Set a later End time."));
+
+    if (!allowed.empty())
+      {
+        pcout << "Resumed with changed entries:" << std::endl;
+        for (const auto &c : allowed)
+          pcout << "  " << c.entry << ": " << c.old_value << " -> " << c.new_value << std::endl;
+      }
+  }
+
+
+
+  void
+  Simulator::read_checkpoint()
+  {
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    // check_checkpoint() has verified the files and set the directory
+    const std::string  name = rank_file(checkpoint_directory, rank);
+    std::ifstream      file(name, std::ios::binary);
+    AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
+    Checkpoint::Reader       in(file, name);
+    const Checkpoint::Header header = Checkpoint::read_header(in, name);
+    AssertThrow(header.ranks == ranks && header.cells == triangulation.n_global_active_cells() &&
+                  header.dofs == solver->get_dof_handler().n_dofs(),
+                ExcMessage("The checkpoint in '" + checkpoint_directory +
+                           "' was written by a run with " + std::to_string(header.ranks) +
+                           " rank(s), " + std::to_string(header.cells) + " cells and " +
+                           std::to_string(header.dofs) + " DoFs; this run has " +
+                           std::to_string(ranks) + ", " +
+                           std::to_string(triangulation.n_global_active_cells()) + " and " +
+                           std::to_string(solver->get_dof_handler().n_dofs()) +
+                           ": resume with the same parameters, rank count and executable."));
+    const double time_step = solver->time_step();
+    solver->load(in);
+    AssertThrow(solver->time_step() == time_step,
+                ExcMessage("The checkpoint '" + name + "' was written with the time step " +
+                           fmt(solver->time_step(), 10) + " s; this run's is " +
+                           fmt(time_step, 10) + " s (another executable?)."));
+    bool has = false;
+    in.pod(has);
+    AssertThrow(has == (contact != nullptr), ExcMessage("The checkpoint's contact setting differs."));
+    if (contact)
+      contact->load(in);
+    in.pod(has);
+    AssertThrow(has == (wheelset != nullptr), ExcMessage("The checkpoint's wheelset setting differs."));
+    if (wheelset)
+      wheelset->load(in);
+    std::string table;
+    in.string(table);
+    {
+      std::istringstream              stream(table);
+      boost::archive::binary_iarchive archive(stream);
+      archive >> statistics;
+    }
+    std::uint64_t n = 0;
+    in.pod(n);
+    vtu_records.resize(n);
+    for (auto &r : vtu_records)
+      {
+        in.pod(r.first);
+        in.string(r.second);
+      }
+    in.pod(vtu_counter);
+    in.pod(n);
+    AssertThrow(n == probes.size(), ExcMessage("The checkpoint's probes differ."));
+    for (Probe &probe : probes)
+      in.vector(probe.history);
+    in.pod(previous_patch_centre);
+    in.pod(next_snapshot);
+    in.pod(initial_energies);
+    in.pod(have_initial_energies);
+    in.pod(max_balance_error);
+    in.pod(hourglass_time_integral);
+    in.pod(hourglass_ref_time_integral);
+    in.pod(internal_time_integral);
+    in.pod(max_hourglass_ratio_actual);
+    in.vector(samples);
+    in.pod(friction_violations);
+    in.pod(most_contact_nodes);
+    std::uint64_t magic = 0;
+    in.pod(magic);
+    AssertThrow(magic == Checkpoint::magic, ExcMessage("The checkpoint '" + name + "' is corrupt."));
+    pcout << "Resumed from " << checkpoint_directory << " at step " << solver->step_number()
+          << ", t = " << fmt(solver->time() * 1e3) << " ms" << std::endl;
+  }
+} // namespace WheelRail
