@@ -11,6 +11,7 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -131,59 +132,59 @@ namespace WheelRail
       return stem + "." + Utilities::int_to_string(r, rank_digits) + ".vtu";
     };
 
-    std::string error;
-    try
-      {
-        // straight into the file: a piece can be large
-        const std::string path = directory + piece(rank);
-        const std::string tmp  = path + ".tmp";
-        {
-          std::ofstream out(tmp, std::ios::binary);
-          AssertThrow(out.good(), ExcMessage("Cannot write '" + tmp + "' (no permission?)."));
-          data_out.write_vtu(out);
-          out.flush();
-          AssertThrow(out.good(),
-                      ExcMessage("Cannot write '" + tmp + "' (disk full or no permission)."));
-        }
-        std::error_code ec;
-        std::filesystem::rename(tmp, path, ec);
-        AssertThrow(!ec,
-                    ExcMessage("Cannot rename '" + tmp + "' to '" + path + "': " + ec.message()));
-      }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream info;
-        e.print_info(info);
-        error = info.str();
-      }
-    catch (const std::exception &e)
-      {
-        error = e.what();
-      }
-    throw_first_error(error, comm);
-
-    // every piece is in place: the record that lists them
-    if (rank == 0)
+    // what failed on this rank, as text, so that every rank learns of it
+    const auto error_of = [](const std::function<void()> &action) -> std::string {
       try
         {
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            pieces.push_back(piece(r));
-          std::ostringstream pvtu;
-          data_out.write_pvtu_record(pvtu, pieces);
-          write_file_atomically(directory + stem + ".pvtu", pvtu.str());
+          action();
         }
       catch (const ExceptionBase &e)
         {
           std::ostringstream info;
           e.print_info(info);
-          error = info.str();
+          return info.str();
         }
       catch (const std::exception &e)
         {
-          error = e.what();
+          return e.what();
         }
-    throw_first_error(error, comm);
+      return "";
+    };
+
+    throw_first_error(error_of([&]() {
+                        // straight into the file: a piece can be large
+                        const std::string path = directory + piece(rank);
+                        const std::string tmp  = path + ".tmp";
+                        {
+                          std::ofstream out(tmp, std::ios::binary);
+                          AssertThrow(out.good(),
+                                      ExcMessage("Cannot write '" + tmp + "' (no permission?)."));
+                          data_out.write_vtu(out);
+                          out.flush();
+                          AssertThrow(out.good(),
+                                      ExcMessage("Cannot write '" + tmp +
+                                                 "' (disk full or no permission)."));
+                        }
+                        std::error_code ec;
+                        std::filesystem::rename(tmp, path, ec);
+                        AssertThrow(!ec,
+                                    ExcMessage("Cannot rename '" + tmp + "' to '" + path +
+                                               "': " + ec.message()));
+                      }),
+                      comm);
+
+    // every piece is in place: the record that lists them
+    throw_first_error(error_of([&]() {
+                        if (rank != 0)
+                          return;
+                        std::vector<std::string> pieces;
+                        for (unsigned int r = 0; r < n_ranks; ++r)
+                          pieces.push_back(piece(r));
+                        std::ostringstream pvtu;
+                        data_out.write_pvtu_record(pvtu, pieces);
+                        write_file_atomically(directory + stem + ".pvtu", pvtu.str());
+                      }),
+                      comm);
     return stem + ".pvtu";
   }
 } // namespace WheelRail
