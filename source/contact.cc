@@ -469,6 +469,21 @@ namespace WheelRail
 
 
 
+  std::pair<Point<dim>, Point<dim>>
+  PenaltyContact::face_box(const MasterFace &face, const std::vector<Point<dim>> &x)
+  {
+    Point<dim> lo = x[face.node[0]], hi = lo;
+    for (unsigned int v = 1; v < 4; ++v)
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lo[d] = std::min(lo[d], x[face.node[v]][d]);
+          hi[d] = std::max(hi[d], x[face.node[v]][d]);
+        }
+    return {lo, hi};
+  }
+
+
+
   void
   PenaltyContact::search(const LinearAlgebra::distributed::Vector<double> &u)
   {
@@ -484,13 +499,7 @@ namespace WheelRail
         std::vector<std::pair<BoostBox, unsigned int>> boxes;
         for (unsigned int f = 0; f < pass.faces.size(); ++f)
           {
-            Point<dim> lo = node_x[pass.faces[f].node[0]], hi = lo;
-            for (unsigned int v = 1; v < 4; ++v)
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  lo[d] = std::min(lo[d], node_x[pass.faces[f].node[v]][d]);
-                  hi[d] = std::max(hi[d], node_x[pass.faces[f].node[v]][d]);
-                }
+            const auto [lo, hi] = face_box(pass.faces[f], node_x);
             boxes.emplace_back(BoostBox(BoostPoint(lo[0] - margin, lo[1] - margin, lo[2] - margin),
                                         BoostPoint(hi[0] + margin, hi[1] + margin, hi[2] + margin)),
                                f);

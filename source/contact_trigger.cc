@@ -120,13 +120,7 @@ namespace WheelRail
         std::vector<std::pair<BoostBox, unsigned int>> boxes(pass.faces.size());
         for (unsigned int f = 0; f < pass.faces.size(); ++f)
           {
-            Point<dim> lo = node_x_search[pass.faces[f].node[0]], hi = lo;
-            for (unsigned int v = 1; v < 4; ++v)
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  lo[d] = std::min(lo[d], node_x_search[pass.faces[f].node[v]][d]);
-                  hi[d] = std::max(hi[d], node_x_search[pass.faces[f].node[v]][d]);
-                }
+            const auto [lo, hi] = face_box(pass.faces[f], node_x_search);
             boxes[f] = {BoostBox(BoostPoint(lo[0], lo[1], lo[2]), BoostPoint(hi[0], hi[1], hi[2])), f};
           }
         std::vector<std::pair<BoostPoint, unsigned int>> points(pass.slaves.size());

@@ -34,6 +34,7 @@
 #include <wheelrail/stopwatch.h>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace WheelRail
@@ -341,6 +342,10 @@ namespace WheelRail
      *  computed at its first use in this evaluation. */
     const FaceBound &
     face_bound(Pass &pass, const unsigned int f);
+    /** The axis-aligned box (lowest, highest corner) of master face @p face
+     *  with its nodes at @p x. */
+    static std::pair<Point<dim>, Point<dim>>
+    face_box(const MasterFace &face, const std::vector<Point<dim>> &x);
     /** The averaged normal of the candidate master faces at contact node
      *  @p n at the current positions, computed at its first use in this
      *  evaluation. */
