@@ -17,6 +17,8 @@
 #   ./run.sh sweep BASE.prm [options]  traction sweep over mu_n and friction laws with its
 #                               plots (scripts/sweep.py --help)
 #   ./run.sh build              set-up and build only
+#   ./run.sh format             clang-format (.clang-format, deal.II's style) on every
+#                               tracked C++ file (installs Debian's clang-format)
 #   ./run.sh help               this text
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -121,6 +123,11 @@ case "$verb" in
   build)
     build
     ;;
+  format)
+    packages=(clang-format)
+    install_missing_packages
+    git ls-files '*.cc' '*.h' | xargs clang-format -i
+    ;;
   plot)
     shift
     install_missing_packages
@@ -138,7 +145,7 @@ case "$verb" in
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -156,7 +163,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac

@@ -42,25 +42,25 @@ namespace
     const v8d b = {1e-7, 2e-7, 3e-7, 4e-7, 5e-7, 6e-7, 7e-7, 8e-7};
     // the chains as separate registers: with an array GCC interchanges the
     // loops and runs one dependent chain at a time (latency, not throughput)
-    v8d r0 = acc[0], r1 = acc[1], r2 = acc[2], r3 = acc[3], r4 = acc[4], r5 = acc[5],
-        r6 = acc[6], r7 = acc[7], r8 = acc[8], r9 = acc[9], r10 = acc[10], r11 = acc[11],
-        r12 = acc[12], r13 = acc[13], r14 = acc[14], r15 = acc[15], r16 = acc[16],
-        r17 = acc[17], r18 = acc[18], r19 = acc[19], r20 = acc[20], r21 = acc[21],
-        r22 = acc[22], r23 = acc[23];
+    v8d r0 = acc[0], r1 = acc[1], r2 = acc[2], r3 = acc[3], r4 = acc[4], r5 = acc[5], r6 = acc[6],
+        r7 = acc[7], r8 = acc[8], r9 = acc[9], r10 = acc[10], r11 = acc[11], r12 = acc[12],
+        r13 = acc[13], r14 = acc[14], r15 = acc[15], r16 = acc[16], r17 = acc[17], r18 = acc[18],
+        r19 = acc[19], r20 = acc[20], r21 = acc[21], r22 = acc[22], r23 = acc[23];
 #define WHEELRAIL_FMA(r) r = r * a + b; // one FMA with -ffp-contract=fast
     for (long i = 0; i < n_iter; ++i)
       {
-        WHEELRAIL_FMA(r0) WHEELRAIL_FMA(r1) WHEELRAIL_FMA(r2) WHEELRAIL_FMA(r3)
-        WHEELRAIL_FMA(r4) WHEELRAIL_FMA(r5) WHEELRAIL_FMA(r6) WHEELRAIL_FMA(r7)
-        WHEELRAIL_FMA(r8) WHEELRAIL_FMA(r9) WHEELRAIL_FMA(r10) WHEELRAIL_FMA(r11)
-        WHEELRAIL_FMA(r12) WHEELRAIL_FMA(r13) WHEELRAIL_FMA(r14) WHEELRAIL_FMA(r15)
-        WHEELRAIL_FMA(r16) WHEELRAIL_FMA(r17) WHEELRAIL_FMA(r18) WHEELRAIL_FMA(r19)
-        WHEELRAIL_FMA(r20) WHEELRAIL_FMA(r21) WHEELRAIL_FMA(r22) WHEELRAIL_FMA(r23)
+        WHEELRAIL_FMA(r0)
+        WHEELRAIL_FMA(r1) WHEELRAIL_FMA(r2) WHEELRAIL_FMA(r3) WHEELRAIL_FMA(r4) WHEELRAIL_FMA(r5)
+          WHEELRAIL_FMA(r6) WHEELRAIL_FMA(r7) WHEELRAIL_FMA(r8) WHEELRAIL_FMA(r9) WHEELRAIL_FMA(r10)
+            WHEELRAIL_FMA(r11) WHEELRAIL_FMA(r12) WHEELRAIL_FMA(r13) WHEELRAIL_FMA(r14)
+              WHEELRAIL_FMA(r15) WHEELRAIL_FMA(r16) WHEELRAIL_FMA(r17) WHEELRAIL_FMA(r18)
+                WHEELRAIL_FMA(r19) WHEELRAIL_FMA(r20) WHEELRAIL_FMA(r21) WHEELRAIL_FMA(r22)
+                  WHEELRAIL_FMA(r23)
       }
 #undef WHEELRAIL_FMA
     const v8d out[n_chains] = {r0,  r1,  r2,  r3,  r4,  r5,  r6,  r7,  r8,  r9,  r10, r11,
                                r12, r13, r14, r15, r16, r17, r18, r19, r20, r21, r22, r23};
-    double sum = 0;
+    double    sum           = 0;
     for (unsigned int c = 0; c < n_chains; ++c)
       for (unsigned int l = 0; l < 8; ++l)
         sum += out[c][l];
@@ -83,7 +83,7 @@ namespace
         for (auto &th : threads)
           th.join();
         const double s = seconds_since(start);
-        best = std::max(best, 2. * 8 * n_chains * double(n_iter) * n_threads / s * 1e-9);
+        best           = std::max(best, 2. * 8 * n_chains * double(n_iter) * n_threads / s * 1e-9);
         for (const double x : sums)
           checksum += x;
       }
@@ -121,7 +121,7 @@ namespace
         const double s     = 1e-3 * rep;
         const auto   start = std::chrono::steady_clock::now();
         run([&](const unsigned int t) {
-          double *__restrict       pa = a.get();
+          double *__restrict pa       = a.get();
           const double *__restrict pb = b.get();
           const double *__restrict pc = c.get();
           for (std::size_t i = part(t).first; i < part(t).second; ++i)

@@ -28,7 +28,8 @@ namespace WheelRail
     {
       std::uint64_t first = 0;
       in.pod(first);
-      AssertThrow(first == magic, dealii::ExcMessage("'" + name + "' is not a wheelrail checkpoint."));
+      AssertThrow(first == magic,
+                  dealii::ExcMessage("'" + name + "' is not a wheelrail checkpoint."));
       Header header;
       in.pod(header.ranks);
       in.pod(header.cells);
@@ -69,7 +70,8 @@ namespace WheelRail
       if (!file.good() || trailer[2] != end_marker ||
           trailer[0] != std::uint64_t(size) - trailer_size)
         return "the checkpoint file '" + name + "' is truncated or incomplete (" +
-               std::to_string(size) + " bytes, no valid end marker): the run that wrote it "
+               std::to_string(size) +
+               " bytes, no valid end marker): the run that wrote it "
                "stopped while writing, or the file was cut";
       // the CRC-32 of the payload, read in blocks
       file.seekg(0);
@@ -213,13 +215,13 @@ namespace WheelRail
 
 
     void
-    compare_parameters(const std::string & old_record,
-                       const std::string & new_record,
+    compare_parameters(const std::string   &old_record,
+                       const std::string   &new_record,
                        std::vector<Change> &allowed,
                        std::vector<Change> &refused)
     {
-      const auto old_entries = parameter_entries(old_record);
-      const auto new_entries = parameter_entries(new_record);
+      const auto            old_entries = parameter_entries(old_record);
+      const auto            new_entries = parameter_entries(new_record);
       std::set<std::string> keys;
       for (const auto &e : old_entries)
         keys.insert(e.first);

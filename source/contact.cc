@@ -31,8 +31,8 @@ namespace WheelRail
 
   namespace
   {
-    namespace bg  = boost::geometry;
-    namespace bgi = boost::geometry::index;
+    namespace bg     = boost::geometry;
+    namespace bgi    = boost::geometry::index;
     using BoostPoint = bg::model::point<double, 3, bg::cs::cartesian>;
     using BoostBox   = bg::model::box<BoostPoint>;
 
@@ -53,7 +53,7 @@ namespace WheelRail
       void
       evaluate(const double    xi,
                const double    eta,
-               Point<dim> &    x,
+               Point<dim>     &x,
                Tensor<1, dim> &dxi,
                Tensor<1, dim> &deta,
                double          N[4]) const
@@ -98,14 +98,14 @@ namespace WheelRail
       {
         // edges as (corner a, corner b, fixed coordinate, value)
         const unsigned int edges[4][2] = {{0, 2}, {1, 3}, {0, 1}, {2, 3}};
-        double             best = std::numeric_limits<double>::max();
+        double             best        = std::numeric_limits<double>::max();
         double             bx = 0, be = 0;
         for (unsigned int e = 0; e < 4; ++e)
           {
-            const Point<dim> &a = *p[edges[e][0]], &b = *p[edges[e][1]];
+            const Point<dim>    &a = *p[edges[e][0]], &b = *p[edges[e][1]];
             const Tensor<1, dim> ab = b - a;
-            const double t  = std::clamp(((xs - a) * ab) / ab.norm_square(), 0., 1.);
-            const double d2 = (a + t * ab).distance_square(xs);
+            const double         t  = std::clamp(((xs - a) * ab) / ab.norm_square(), 0., 1.);
+            const double         d2 = (a + t * ab).distance_square(xs);
             if (d2 < best)
               {
                 best = d2;
@@ -145,11 +145,11 @@ namespace WheelRail
             const double         det = a11 * a22 - a12 * a12;
             if (!(det > 0))
               break;
-            const double dx = -(a22 * b1 - a12 * b2) / det;
-            const double de = -(a11 * b2 - a12 * b1) / det;
-            const bool clamped = std::abs(xi + dx) > 3. || std::abs(eta + de) > 3.;
-            xi                 = std::clamp(xi + dx, -3., 3.);
-            eta                = std::clamp(eta + de, -3., 3.);
+            const double dx      = -(a22 * b1 - a12 * b2) / det;
+            const double de      = -(a11 * b2 - a12 * b1) / det;
+            const bool   clamped = std::abs(xi + dx) > 3. || std::abs(eta + de) > 3.;
+            xi                   = std::clamp(xi + dx, -3., 3.);
+            eta                  = std::clamp(eta + de, -3., 3.);
             if (std::abs(dx) + std::abs(de) < 1e-13)
               break;
             // the closest point lies far outside the face (beyond the
@@ -166,7 +166,7 @@ namespace WheelRail
 
 
 
-  PenaltyContact::PenaltyContact(const ContactParameters & contact,
+  PenaltyContact::PenaltyContact(const ContactParameters  &contact,
                                  const MaterialParameters &material,
                                  MPI_Comm                  comm)
     : prm(contact)
@@ -185,10 +185,11 @@ namespace WheelRail
   unsigned int
   PenaltyContact::node_index(const types::global_dof_index dof, const Point<dim> &X)
   {
-    const auto it = std::lower_bound(dof_to_node.begin(),
-                                     dof_to_node.end(),
-                                     std::make_pair(dof, 0u),
-                                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    const auto it =
+      std::lower_bound(dof_to_node.begin(),
+                       dof_to_node.end(),
+                       std::make_pair(dof, 0u),
+                       [](const auto &a, const auto &b) { return a.first < b.first; });
     if (it != dof_to_node.end() && it->first == dof)
       return it->second;
     const unsigned int index = node_dof.size();
@@ -201,10 +202,10 @@ namespace WheelRail
 
 
   void
-  PenaltyContact::collect_pass(const DoFHandler<dim> &  dof_handler,
+  PenaltyContact::collect_pass(const DoFHandler<dim>   &dof_handler,
                                const types::boundary_id slave_id,
                                const types::boundary_id master_id,
-                               Pass &                   pass)
+                               Pass                    &pass)
   {
     // local contributions, packed as doubles for one all_gather each:
     // slaves (dof, X, partial area), faces (4 dofs, 4 X, k, sign)
@@ -214,11 +215,10 @@ namespace WheelRail
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary())
             {
-              const auto     face = cell->face(f);
-              const double   area =
-                0.5 * cross_product_3d(face->vertex(3) - face->vertex(0),
-                                       face->vertex(2) - face->vertex(1))
-                        .norm();
+              const auto   face = cell->face(f);
+              const double area = 0.5 * cross_product_3d(face->vertex(3) - face->vertex(0),
+                                                         face->vertex(2) - face->vertex(1))
+                                          .norm();
               if (face->boundary_id() == slave_id)
                 for (unsigned int v = 0; v < 4; ++v)
                   {
@@ -277,13 +277,13 @@ namespace WheelRail
           Point<dim> c;
           for (unsigned int v = 0; v < 4; ++v)
             c += 0.25 * Point<dim>(part[i + 4 * v + 1], part[i + 4 * v + 2], part[i + 4 * v + 3]);
-          sorted_faces.emplace_back(c, std::vector<double>(part.begin() + i, part.begin() + i + 19));
+          sorted_faces.emplace_back(c,
+                                    std::vector<double>(part.begin() + i, part.begin() + i + 19));
           thinnest = std::min(thinnest, part[i + 17] / part[i + 16]);
         }
     // penalty stiffness per face (SPEC 4; Contact/Penalty stiffness)
     if (prm.penalty_stiffness == "area" && &pass == &passes.front())
-      reference_length =
-        prm.penalty_reference_length > 0 ? prm.penalty_reference_length : thinnest;
+      reference_length = prm.penalty_reference_length > 0 ? prm.penalty_reference_length : thinnest;
     const auto stiffness = [&](const double area, const double volume) {
       return prm.penalty_stiffness == "area" ?
                prm.penalty_scale * bulk_modulus * area / reference_length :
@@ -296,8 +296,9 @@ namespace WheelRail
       {
         MasterFace face;
         for (unsigned int v = 0; v < 4; ++v)
-          face.node[v] = node_index(static_cast<types::global_dof_index>(f.second[4 * v]),
-                                    Point<dim>(f.second[4 * v + 1], f.second[4 * v + 2], f.second[4 * v + 3]));
+          face.node[v] =
+            node_index(static_cast<types::global_dof_index>(f.second[4 * v]),
+                       Point<dim>(f.second[4 * v + 1], f.second[4 * v + 2], f.second[4 * v + 3]));
         face.stiffness = stiffness(f.second[16], f.second[17]);
         face.sign      = f.second[18];
         pass.faces.push_back(face);
@@ -316,9 +317,10 @@ namespace WheelRail
 
 
   void
-  PenaltyContact::setup(const DoFHandler<dim> &                                    dof_handler,
-                        const std::shared_ptr<const Utilities::MPI::Partitioner> &vector_partitioner,
-                        const LinearAlgebra::distributed::Vector<double> &        lumped_mass)
+  PenaltyContact::setup(
+    const DoFHandler<dim>                                    &dof_handler,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &vector_partitioner,
+    const LinearAlgebra::distributed::Vector<double>         &lumped_mass)
   {
     partitioner = vector_partitioner;
     node_dof.clear();
@@ -354,7 +356,7 @@ namespace WheelRail
     normal_evaluation.assign(node_dof.size(), 0);
     normal_offsets.assign(node_dof.size() + 1, 0);
     normal_entries.clear();
-    evaluation = 0;
+    evaluation    = 0;
     node_x        = node_X;
     node_x_search = node_X;
     std::vector<unsigned int> all(node_dof.size());
@@ -363,11 +365,11 @@ namespace WheelRail
     plan_gather(all, all_gather);
     active_nodes.clear();
     plan_gather(active_nodes, active_gather);
-    need_search   = true;
-    dissipation   = 0;
-    damping_loss  = 0;
-    searches      = 0;
-    search_time   = 0;
+    need_search  = true;
+    dissipation  = 0;
+    damping_loss = 0;
+    searches     = 0;
+    search_time  = 0;
     trigger_nodes.clear();
     step_motion_known = false;
     overlap_checked   = false;
@@ -413,15 +415,15 @@ namespace WheelRail
 
   void
   PenaltyContact::gather_positions(const LinearAlgebra::distributed::Vector<double> &u,
-                                   const GatherPlan &                                plan)
+                                   const GatherPlan                                 &plan)
   {
     // x = X + u of the owned nodes; u is read at scattered places (the
     // contact nodes among all the mesh's), each read a likely cache miss:
     // requested a few nodes ahead, the misses overlap
     constexpr unsigned int ahead = 16;
     const unsigned int     n_own = plan.local_dof.size();
-    const double *         U     = u.begin();
-    std::vector<double> &  send  = gather_send;
+    const double          *U     = u.begin();
+    std::vector<double>   &send  = gather_send;
     send.resize(dim * n_own);
     for (unsigned int k = 0; k < n_own; ++k)
       {
@@ -434,8 +436,13 @@ namespace WheelRail
     if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
       {
         gather_recv.resize(dim * plan.nodes.size());
-        const int ierr = MPI_Allgatherv(send.data(), send.size(), MPI_DOUBLE, gather_recv.data(),
-                                        plan.counts.data(), plan.displs.data(), MPI_DOUBLE,
+        const int ierr = MPI_Allgatherv(send.data(),
+                                        send.size(),
+                                        MPI_DOUBLE,
+                                        gather_recv.data(),
+                                        plan.counts.data(),
+                                        plan.displs.data(),
+                                        MPI_DOUBLE,
                                         mpi_communicator);
         AssertThrowMPI(ierr);
         x = gather_recv.data();
@@ -450,11 +457,11 @@ namespace WheelRail
   void
   PenaltyContact::all_gather_concatenated(const std::vector<T> &send,
                                           const MPI_Datatype    type,
-                                          std::vector<T> &      recv)
+                                          std::vector<T>       &recv)
   {
     const int         n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     int               count   = send.size();
-    std::vector<int> &counts  = exchange_counts, &displs = exchange_displs;
+    std::vector<int> &counts = exchange_counts, &displs = exchange_displs;
     counts.resize(n_ranks);
     displs.assign(n_ranks, 0);
     int ierr = MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, mpi_communicator);
@@ -462,8 +469,8 @@ namespace WheelRail
     for (int r = 1; r < n_ranks; ++r)
       displs[r] = displs[r - 1] + counts[r - 1];
     recv.resize(displs.back() + counts.back());
-    ierr = MPI_Allgatherv(send.data(), count, type, recv.data(), counts.data(), displs.data(),
-                          type, mpi_communicator);
+    ierr = MPI_Allgatherv(
+      send.data(), count, type, recv.data(), counts.data(), displs.data(), type, mpi_communicator);
     AssertThrowMPI(ierr);
   }
 
@@ -491,7 +498,7 @@ namespace WheelRail
     gather_positions(u, all_gather);
     node_x_search = node_x;
 
-    const double margin = prm.search_margin;
+    const double      margin = prm.search_margin;
     std::vector<bool> active(node_dof.size(), false);
     for (Pass &pass : passes)
       {
@@ -517,8 +524,8 @@ namespace WheelRail
         // the queries of this rank's block of the slaves, packed as
         // (slave, number of faces, faces in ascending order), then all
         // ranks' blocks in slave order on every rank
-        const auto own = own_candidates(pass.slaves.size());
-        std::vector<unsigned int> found;
+        const auto                                     own = own_candidates(pass.slaves.size());
+        std::vector<unsigned int>                      found;
         std::vector<std::pair<BoostBox, unsigned int>> hits;
         for (unsigned int s = own.first; s < own.second; ++s)
           {
@@ -554,7 +561,7 @@ namespace WheelRail
                 pass.slaves[s].face             = -1;
                 continue;
               }
-            const unsigned int n_faces = found[next + 1];
+            const unsigned int  n_faces = found[next + 1];
             const unsigned int *list    = &found[next + 2];
             next += 2 + n_faces;
             pass.candidate_slaves.push_back(s);
@@ -625,26 +632,27 @@ namespace WheelRail
     const MasterFace &face = pass.faces[f];
     const Point<dim> &p0 = node_x[face.node[0]], &p1 = node_x[face.node[1]],
                      &p2 = node_x[face.node[2]], &p3 = node_x[face.node[3]];
-    const Tensor<1, dim> g1 = 0.25 * ((p1 - p0) + (p3 - p2));
-    const Tensor<1, dim> g2 = 0.25 * ((p2 - p0) + (p3 - p1));
-    const Tensor<1, dim> w  = 0.25 * ((p0 - p1) + (p3 - p2));
-    bound.centre            = Point<dim>(0.25 * (p0 + p1 + p2 + p3));
-    const Tensor<1, dim> n0 = cross_product_3d(g1, g2);
-    const double     length = n0.norm();
-    bound.usable            = length > 0;
+    const Tensor<1, dim> g1     = 0.25 * ((p1 - p0) + (p3 - p2));
+    const Tensor<1, dim> g2     = 0.25 * ((p2 - p0) + (p3 - p1));
+    const Tensor<1, dim> w      = 0.25 * ((p0 - p1) + (p3 - p2));
+    bound.centre                = Point<dim>(0.25 * (p0 + p1 + p2 + p3));
+    const Tensor<1, dim> n0     = cross_product_3d(g1, g2);
+    const double         length = n0.norm();
+    bound.usable                = length > 0;
     if (!bound.usable)
       return bound;
     bound.normal = n0 / length;
     // the normal's change across the face, and its part across n0
     const Tensor<1, dim> a = cross_product_3d(g1, w), b = cross_product_3d(w, g2);
-    const Tensor<1, dim> at = cross_product_3d(a, bound.normal), bt = cross_product_3d(b, bound.normal);
-    const double         an = a * bound.normal, bn = b * bound.normal;
+    const Tensor<1, dim> at = cross_product_3d(a, bound.normal),
+                         bt = cross_product_3d(b, bound.normal);
+    const double an = a * bound.normal, bn = b * bound.normal;
     bound.radius    = 0;
     bound.sin_angle = 0;
     for (unsigned int v = 0; v < 4; ++v)
       {
         const double xi = (v & 1) ? e : -e, eta = (v & 2) ? e : -e;
-        bound.radius    = std::max(bound.radius, (xi * g1 + eta * g2 + xi * eta * w).norm());
+        bound.radius       = std::max(bound.radius, (xi * g1 + eta * g2 + xi * eta * w).norm());
         const double along = length + xi * an + eta * bn; // m . n0 / |n0|
         if (!(along > 0))
           {
@@ -652,7 +660,8 @@ namespace WheelRail
             return bound;
           }
         const double across = (xi * at + eta * bt).norm(); // |m x n0| / |n0|
-        bound.sin_angle = std::max(bound.sin_angle, across / std::sqrt(along * along + across * across));
+        bound.sin_angle =
+          std::max(bound.sin_angle, across / std::sqrt(along * along + across * across));
       }
     bound.usable = bound.sin_angle <= 0.1;
     return bound;
@@ -677,9 +686,11 @@ namespace WheelRail
     for (unsigned int e = normal_offsets[n]; e < normal_offsets[n + 1]; ++e)
       {
         const NormalEntry &entry = normal_entries[e];
-        const MasterFace & face  = passes[entry.pass].faces[entry.face];
-        BilinearFace       bf{{&node_x[face.node[0]], &node_x[face.node[1]],
-                               &node_x[face.node[2]], &node_x[face.node[3]]}};
+        const MasterFace  &face  = passes[entry.pass].faces[entry.face];
+        BilinearFace       bf{{&node_x[face.node[0]],
+                               &node_x[face.node[1]],
+                               &node_x[face.node[2]],
+                               &node_x[face.node[3]]}};
         Tensor<1, dim>     dxi, deta;
         bf.corner_tangents(entry.corner, dxi, deta);
         normal += face.sign * cross_product_3d(dxi, deta);
@@ -732,7 +743,7 @@ namespace WheelRail
   std::vector<MasterNodeState>
   PenaltyContact::master_states() const
   {
-    const Pass &                 pass = passes.front();
+    const Pass                  &pass = passes.front();
     std::vector<MasterNodeState> states(node_dof.size());
     std::vector<double>          weight(node_dof.size(), 0.);
     std::vector<bool>            is_master(node_dof.size(), false);
@@ -746,9 +757,9 @@ namespace WheelRail
           continue;
         const MasterFace &face = pass.faces[state.face];
         const double      N[4] = {0.25 * (1 - state.xi) * (1 - state.eta),
-                             0.25 * (1 + state.xi) * (1 - state.eta),
-                             0.25 * (1 - state.xi) * (1 + state.eta),
-                             0.25 * (1 + state.xi) * (1 + state.eta)};
+                                  0.25 * (1 + state.xi) * (1 - state.eta),
+                                  0.25 * (1 - state.xi) * (1 + state.eta),
+                                  0.25 * (1 + state.xi) * (1 + state.eta)};
         for (unsigned int v = 0; v < 4; ++v)
           {
             MasterNodeState &m = states[face.node[v]];
@@ -785,7 +796,7 @@ namespace WheelRail
   PenaltyContact::add_forces(const LinearAlgebra::distributed::Vector<double> &u,
                              const double                                      dt,
                              const bool                                        advance,
-                             LinearAlgebra::distributed::Vector<double> &      f)
+                             LinearAlgebra::distributed::Vector<double>       &f)
   {
     Clock::time_point clock = Clock::now();
     // the ranks meet here first after their element loops, in the reduction
@@ -850,8 +861,8 @@ namespace WheelRail
           const ContactNodeState &state = pass.slaves[s];
           if (!state.in_contact)
             continue;
-          const Tensor<1, dim> F = state.normal_force * state.normal + state.tangential_force;
-          const auto add = [&](const types::global_dof_index dof, const double weight) {
+          const Tensor<1, dim> F   = state.normal_force * state.normal + state.tangential_force;
+          const auto           add = [&](const types::global_dof_index dof, const double weight) {
             if (partitioner->in_local_range(dof))
               {
                 const unsigned int i = partitioner->global_to_local(dof);
@@ -881,8 +892,8 @@ namespace WheelRail
     for (unsigned int c = own.first; c < own.second; ++c)
       {
         const unsigned int s     = pass.candidate_slaves[c];
-        ContactNodeState & state = pass.slaves[s];
-        const Point<dim> & xs    = node_x[pass.slave_node[s]];
+        ContactNodeState  &state = pass.slaves[s];
+        const Point<dim>  &xs    = node_x[pass.slave_node[s]];
         state.x                  = xs;
         const Point<dim> x_prev  = state.x_previous;
         state.friction_loss      = 0;
@@ -904,17 +915,19 @@ namespace WheelRail
                 // face_bound()): project() would give out > 0.1,
                 // skipped below; most candidates are neighbours of the
                 // face under the slave and end here
-                const Tensor<1, dim> d     = xs - bound.centre;
-                const double         dd    = d.norm_square();
-                const double         dn    = d * bound.normal;
-                const double         reach = 1.01 * (bound.radius + (std::sqrt(dd) + bound.radius) *
-                                                                   bound.sin_angle);
+                const Tensor<1, dim> d  = xs - bound.centre;
+                const double         dd = d.norm_square();
+                const double         dn = d * bound.normal;
+                const double         reach =
+                  1.01 * (bound.radius + (std::sqrt(dd) + bound.radius) * bound.sin_angle);
                 if (dd - dn * dn > reach * reach)
                   continue;
               }
             const MasterFace &face = pass.faces[pass.face_lists[k]];
-            BilinearFace      bf{{&node_x[face.node[0]], &node_x[face.node[1]],
-                                  &node_x[face.node[2]], &node_x[face.node[3]]}};
+            BilinearFace      bf{{&node_x[face.node[0]],
+                                  &node_x[face.node[1]],
+                                  &node_x[face.node[2]],
+                                  &node_x[face.node[3]]}};
             double            xi, eta;
             bf.project(xs, xi, eta);
             const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
@@ -958,9 +971,9 @@ namespace WheelRail
         const double      k    = face.stiffness;
         if (advance && state.face < 0)
           new_contact_depth = std::max(new_contact_depth, -best_gap);
-        state.in_contact       = true;
-        state.normal           = best_n;
-        state.normal_force     = -k * best_gap;
+        state.in_contact   = true;
+        state.normal       = best_n;
+        state.normal_force = -k * best_gap;
         if (advance && prm.damping_ratio > 0 && state.face >= 0)
           {
             // viscous normal force on the closing rate of the gap; the
@@ -984,8 +997,10 @@ namespace WheelRail
                 // a new contact: the slip of this step is the motion of the
                 // slave relative to the face, from its previous position
                 // projected onto the same face
-                BilinearFace bn{{&node_x[face.node[0]], &node_x[face.node[1]],
-                                 &node_x[face.node[2]], &node_x[face.node[3]]}};
+                BilinearFace bn{{&node_x[face.node[0]],
+                                 &node_x[face.node[1]],
+                                 &node_x[face.node[2]],
+                                 &node_x[face.node[3]]}};
                 double       xi_p, eta_p;
                 bn.project(x_prev, xi_p, eta_p);
                 Point<dim>     x_old, x_new;
@@ -998,25 +1013,29 @@ namespace WheelRail
             else
               {
                 const MasterFace &old = pass.faces[state.face];
-                BilinearFace      bf{{&node_x[old.node[0]], &node_x[old.node[1]],
-                                      &node_x[old.node[2]], &node_x[old.node[3]]}};
+                BilinearFace      bf{{&node_x[old.node[0]],
+                                      &node_x[old.node[1]],
+                                      &node_x[old.node[2]],
+                                      &node_x[old.node[3]]}};
                 Point<dim>        x_old, x_new;
                 Tensor<1, dim>    dxi, deta;
                 double            N[4];
                 bf.evaluate(state.xi, state.eta, x_old, dxi, deta, N);
-                BilinearFace bn{{&node_x[face.node[0]], &node_x[face.node[1]],
-                                 &node_x[face.node[2]], &node_x[face.node[3]]}};
+                BilinearFace bn{{&node_x[face.node[0]],
+                                 &node_x[face.node[1]],
+                                 &node_x[face.node[2]],
+                                 &node_x[face.node[3]]}};
                 bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
                 de     = x_new - x_old;
                 Ft_old = state.tangential_force;
               }
             Tensor<1, dim> trial = Ft_old - kt * de;
             trial -= (trial * best_n) * best_n;
-            state.slip_rate      = de / dt;
-            state.slip_velocity  = de.norm() / dt;
-            state.cof            = law->coefficient(state.slip_velocity);
-            state.tangential_force = return_map(trial, state.cof * state.normal_force, kt,
-                                                state.slipping, state.friction_loss);
+            state.slip_rate        = de / dt;
+            state.slip_velocity    = de.norm() / dt;
+            state.cof              = law->coefficient(state.slip_velocity);
+            state.tangential_force = return_map(
+              trial, state.cof * state.normal_force, kt, state.slipping, state.friction_loss);
           }
         else
           {
@@ -1071,7 +1090,7 @@ namespace WheelRail
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     const unsigned int n       = pass.candidate_slaves.size();
     const auto         own     = own_candidates(n);
-    std::vector<int> & counts  = exchange_counts, &displs = exchange_displs;
+    std::vector<int>  &counts = exchange_counts, &displs = exchange_displs;
     counts.resize(n_ranks);
     displs.resize(n_ranks);
     for (unsigned int r = 0; r < n_ranks; ++r)
@@ -1088,8 +1107,14 @@ namespace WheelRail
         exchange_gaps[2 * c]          = state.in_contact ? 1. : 0.;
         exchange_gaps[2 * c + 1]      = state.gap;
       }
-    int ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_gaps.data(),
-                              counts.data(), displs.data(), MPI_DOUBLE, mpi_communicator);
+    int ierr = MPI_Allgatherv(MPI_IN_PLACE,
+                              0,
+                              MPI_DATATYPE_NULL,
+                              exchange_gaps.data(),
+                              counts.data(),
+                              displs.data(),
+                              MPI_DOUBLE,
+                              mpi_communicator);
     AssertThrowMPI(ierr);
 
     // the contact states, in candidate order
@@ -1106,13 +1131,20 @@ namespace WheelRail
         total += count;
       }
     exchange_buffer.resize(total);
-    for (unsigned int c = own.first, i = displs[Utilities::MPI::this_mpi_process(mpi_communicator)] / size;
+    for (unsigned int c = own.first,
+                      i = displs[Utilities::MPI::this_mpi_process(mpi_communicator)] / size;
          c < own.second;
          ++c)
       if (exchange_gaps[2 * c] > 0)
         exchange_buffer[i++] = pass.slaves[pass.candidate_slaves[c]];
-    ierr = MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, exchange_buffer.data(),
-                          counts.data(), displs.data(), MPI_BYTE, mpi_communicator);
+    ierr = MPI_Allgatherv(MPI_IN_PLACE,
+                          0,
+                          MPI_DATATYPE_NULL,
+                          exchange_buffer.data(),
+                          counts.data(),
+                          displs.data(),
+                          MPI_BYTE,
+                          mpi_communicator);
     AssertThrowMPI(ierr);
     for (unsigned int c = 0, i = 0; c < n; ++c)
       {
@@ -1123,7 +1155,10 @@ namespace WheelRail
             if (in_contact)
               pass.slaves[s] = exchange_buffer[i];
             else
-              separate(pass.slaves[s], node_x[pass.slave_node[s]], exchange_gaps[2 * c + 1], advance);
+              separate(pass.slaves[s],
+                       node_x[pass.slave_node[s]],
+                       exchange_gaps[2 * c + 1],
+                       advance);
           }
         i += in_contact;
       }
@@ -1167,7 +1202,8 @@ namespace WheelRail
         }
         if (state.slipping)
           ++totals.n_slip;
-        if (law && state.tangential_force.norm() > state.cof * state.normal_force * (1 + 1e-12) + 1e-300)
+        if (law &&
+            state.tangential_force.norm() > state.cof * state.normal_force * (1 + 1e-12) + 1e-300)
           ++totals.n_violation;
 
         ContactPair pair;

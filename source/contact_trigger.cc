@@ -61,8 +61,8 @@ namespace WheelRail
 {
   namespace
   {
-    namespace bg  = boost::geometry;
-    namespace bgi = boost::geometry::index;
+    namespace bg     = boost::geometry;
+    namespace bgi    = boost::geometry::index;
     using BoostPoint = bg::model::point<double, 3, bg::cs::cartesian>;
     using BoostBox   = bg::model::box<BoostPoint>;
 
@@ -121,7 +121,8 @@ namespace WheelRail
         for (unsigned int f = 0; f < pass.faces.size(); ++f)
           {
             const auto [lo, hi] = face_box(pass.faces[f], node_x_search);
-            boxes[f] = {BoostBox(BoostPoint(lo[0], lo[1], lo[2]), BoostPoint(hi[0], hi[1], hi[2])), f};
+            boxes[f] = {BoostBox(BoostPoint(lo[0], lo[1], lo[2]), BoostPoint(hi[0], hi[1], hi[2])),
+                        f};
           }
         std::vector<std::pair<BoostPoint, unsigned int>> points(pass.slaves.size());
         for (unsigned int s = 0; s < pass.slaves.size(); ++s)
@@ -130,7 +131,8 @@ namespace WheelRail
             points[s]           = {BoostPoint(x[0], x[1], x[2]), s};
           }
         const bgi::rtree<std::pair<BoostBox, unsigned int>, bgi::quadratic<16>>   face_tree(boxes);
-        const bgi::rtree<std::pair<BoostPoint, unsigned int>, bgi::quadratic<16>> slave_tree(points);
+        const bgi::rtree<std::pair<BoostPoint, unsigned int>, bgi::quadratic<16>> slave_tree(
+          points);
 
         std::vector<std::pair<BoostBox, unsigned int>>   nearest_face;
         std::vector<std::pair<BoostPoint, unsigned int>> nearest_slave;
@@ -140,13 +142,14 @@ namespace WheelRail
               nearest_face.clear();
               face_tree.query(bgi::nearest(points[s].first, 1), std::back_inserter(nearest_face));
               const double c = bg::distance(points[s].first, nearest_face.front().first);
-              double &     e = trigger_nodes[entry[pass.slave_node[s]]].e[2 * p];
+              double      &e = trigger_nodes[entry[pass.slave_node[s]]].e[2 * p];
               e              = std::min(e, 0.5 * std::max(margin, c));
             }
         for (unsigned int f = 0; f < pass.faces.size(); ++f)
           {
             const unsigned int *node = pass.faces[f].node;
-            if (entry[node[0]] < 0 && entry[node[1]] < 0 && entry[node[2]] < 0 && entry[node[3]] < 0)
+            if (entry[node[0]] < 0 && entry[node[1]] < 0 && entry[node[2]] < 0 &&
+                entry[node[3]] < 0)
               continue;
             nearest_slave.clear();
             slave_tree.query(bgi::nearest(boxes[f].first, 1), std::back_inserter(nearest_slave));
@@ -159,9 +162,9 @@ namespace WheelRail
                 }
           }
       }
-    std::sort(trigger_nodes.begin(), trigger_nodes.end(), [](const TriggerNode &a, const TriggerNode &b) {
-      return a.local_dof < b.local_dof;
-    });
+    std::sort(trigger_nodes.begin(),
+              trigger_nodes.end(),
+              [](const TriggerNode &a, const TriggerNode &b) { return a.local_dof < b.local_dof; });
     // at a search the positions are those of this evaluation: dx = 0
     step_motion_known = true;
   }
@@ -171,7 +174,7 @@ namespace WheelRail
   bool
   PenaltyContact::approach_bound_exceeded(const LinearAlgebra::distributed::Vector<double> &u,
                                           const bool                                        advance,
-                                          Clock::time_point &                               clock)
+                                          Clock::time_point                                &clock)
   {
     // per pass: A (slaves), B (master nodes); then the largest motion in
     // this step of a slave and of a master node
@@ -179,9 +182,9 @@ namespace WheelRail
     const unsigned int     n_values = 2 * passes.size();
     double                 value[6];
     std::fill(value, value + 6, -no_role);
-    double *const  step = value + n_values;
-    const double * U    = u.begin();
-    const unsigned int n = trigger_nodes.size();
+    double *const      step = value + n_values;
+    const double      *U    = u.begin();
+    const unsigned int n    = trigger_nodes.size();
     for (unsigned int k = 0; k < n; ++k)
       {
         TriggerNode &t = trigger_nodes[k];
@@ -190,9 +193,9 @@ namespace WheelRail
         Tensor<1, dim> dx;
         for (unsigned int d = 0; d < dim; ++d)
           dx[d] = U[t.local_dof + d] - t.u_search[d];
-        const double moved = dx.norm();
+        const double moved         = dx.norm();
         const double moved_in_step = (dx - t.dx).norm();
-        t.dx                 = dx;
+        t.dx                       = dx;
         for (unsigned int r = 0; r < n_values; ++r)
           {
             value[r] = std::max(value[r], moved - t.e[r]);
@@ -249,8 +252,8 @@ namespace WheelRail
     // 0.05 R). A deeper penetration at the start is an overlap of the
     // bodies as placed; its penalty force would act at once in full.
     // The states are the same on every rank: so is the decision.
-    double     depth = 0, tolerance = 0;
-    Point<dim> where;
+    double       depth = 0, tolerance = 0;
+    Point<dim>   where;
     unsigned int pass_of = 0;
     for (unsigned int p = 0; p < passes.size(); ++p)
       for (const unsigned int s : passes[p].candidate_slaves)
@@ -258,8 +261,8 @@ namespace WheelRail
           const ContactNodeState &state = passes[p].slaves[s];
           if (!state.in_contact)
             continue;
-          const MasterFace &face = passes[p].faces[state.face];
-          double            h    = 0;
+          const MasterFace  &face        = passes[p].faces[state.face];
+          double             h           = 0;
           const unsigned int edges[4][2] = {{0, 1}, {2, 3}, {0, 2}, {1, 3}};
           for (const auto &e : edges)
             h = std::max(h, node_X[face.node[e[0]]].distance(node_X[face.node[e[1]]]));
@@ -274,13 +277,13 @@ namespace WheelRail
         }
     if (depth == 0)
       return;
-    const bool first_pass = pass_of == 0;
-    const auto slave  = body_of(first_pass ? prm.slave_boundary : prm.master_boundary);
-    const auto master = body_of(first_pass ? prm.master_boundary : prm.slave_boundary);
+    const bool         first_pass = pass_of == 0;
+    const auto         slave      = body_of(first_pass ? prm.slave_boundary : prm.master_boundary);
+    const auto         master     = body_of(first_pass ? prm.master_boundary : prm.slave_boundary);
     std::ostringstream message;
-    message << "The bodies overlap at the start: a node of the " << slave.first << " at X = "
-            << millimetres(where) << " lies " << depth * 1e3 << " mm deep in the " << master.first
-            << ", more than the tolerance " << tolerance * 1e3
+    message << "The bodies overlap at the start: a node of the " << slave.first
+            << " at X = " << millimetres(where) << " lies " << depth * 1e3 << " mm deep in the "
+            << master.first << ", more than the tolerance " << tolerance * 1e3
             << " mm (0.05 x the longest edge of the master face, the faceting of a curved "
                "surface, or Contact/Initial overlap tolerance). Its penalty force would act in "
                "full at the first step. Check the parameters that place the bodies: "

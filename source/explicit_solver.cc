@@ -8,7 +8,6 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <wheelrail/explicit_solver.h>
-
 #include <wheelrail/geometry.h>
 #include <wheelrail/stopwatch.h>
 
@@ -26,12 +25,12 @@ namespace WheelRail
     /** Fields of the per-cell element data, each stored for W lanes. */
     namespace Field
     {
-      constexpr unsigned int b         = 0;  ///< 24: B_a / V0, [a*3+j]
-      constexpr unsigned int c         = 24; ///< 12: h_alpha . X_j, [alpha*3+j]
-      constexpr unsigned int volume    = 36; ///< V0
-      constexpr unsigned int kappa     = 37; ///< hourglass stiffness
-      constexpr unsigned int beta      = 38; ///< damping time constant [s]
-      constexpr unsigned int n_fields  = 39;
+      constexpr unsigned int b        = 0;  ///< 24: B_a / V0, [a*3+j]
+      constexpr unsigned int c        = 24; ///< 12: h_alpha . X_j, [alpha*3+j]
+      constexpr unsigned int volume   = 36; ///< V0
+      constexpr unsigned int kappa    = 37; ///< hourglass stiffness
+      constexpr unsigned int beta     = 38; ///< damping time constant [s]
+      constexpr unsigned int n_fields = 39;
       // Only what the kernel reads streams through it every step: the
       // Lame constants are the same for all cells (one material), the
       // hourglass stiffness with the reference QM lives in its own array
@@ -79,13 +78,18 @@ namespace WheelRail
      * child numbering of deal.II), 27 distinct nodes instead of 64.
      */
     constexpr unsigned int family_offset[8] = {0, 1, 3, 4, 9, 10, 12, 13};
-    typedef long long v8i __attribute__((vector_size(64)));
+    typedef long long      v8i __attribute__((vector_size(64)));
     /** Lane l of the vector of vertex a over the children: grid node
      *  family_offset[a] + family_offset[l], i.e. element family_offset[l] of
      *  the 16 grid values from family_offset[a] on. */
-    constexpr v8i family_lanes = {family_offset[0], family_offset[1], family_offset[2],
-                                  family_offset[3], family_offset[4], family_offset[5],
-                                  family_offset[6], family_offset[7]};
+    constexpr v8i family_lanes = {family_offset[0],
+                                  family_offset[1],
+                                  family_offset[2],
+                                  family_offset[3],
+                                  family_offset[4],
+                                  family_offset[5],
+                                  family_offset[6],
+                                  family_offset[7]};
 
     /** Per grid node, the (vertex, lane) pairs that reach it as offsets
      *  a * 3 W + l into a [vertex][component][lane] array, by ascending a:
@@ -193,7 +197,7 @@ namespace WheelRail
       v8d power = {};
       if constexpr (with_damping)
         {
-          const v8d beta    = load(data + Field::beta * W);
+          const v8d beta = load(data + Field::beta * W);
           v8d       L[3][3];
           batch_gradient(data, vb, L);
           // F = I + H
@@ -254,7 +258,7 @@ namespace WheelRail
 #pragma GCC unroll 3
         for (unsigned int j = 0; j < 3; ++j)
           {
-            v8d fs = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
+            v8d fs  = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
             T[i][j] = V0 * fs;
           }
 #pragma GCC unroll 4
@@ -298,9 +302,9 @@ namespace WheelRail
 
     /** Displacement gradient H = sum_a u_a (x) b_a of lane l of a batch. */
     inline void
-    displacement_gradient(const double *      U,
+    displacement_gradient(const double       *U,
                           const unsigned int *nodes,
-                          const double *      data,
+                          const double       *data,
                           const unsigned int  l,
                           double (&H)[3][3])
     {
@@ -357,7 +361,7 @@ namespace WheelRail
 
 
 
-  ExplicitSolver::ExplicitSolver(const Parameters &                         parameters,
+  ExplicitSolver::ExplicitSolver(const Parameters                          &parameters,
                                  parallel::distributed::Triangulation<dim> &tria)
     : prm(parameters)
     , triangulation(tria)
@@ -420,8 +424,8 @@ namespace WheelRail
     setup_mass_and_loads();
     setup_prescribed_dofs();
     setup_applied_forces();
-    t       = 0;
-    n_steps = 0;
+    t                   = 0;
+    n_steps             = 0;
     damping_dissipation = 0;
     boundary_work       = 0;
   }
@@ -436,7 +440,7 @@ namespace WheelRail
     // put it at the mean of its masters. Moving the vertex there makes the
     // geometry agree with the displacement space, so that linear fields
     // (rigid rotations among them) are represented exactly.
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index>          dofs(fe.n_dofs_per_cell());
     std::map<types::global_dof_index, Point<dim>> position;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (!cell->is_artificial())
@@ -451,8 +455,8 @@ namespace WheelRail
           cell->get_dof_indices(dofs);
           for (unsigned int a = 0; a < 8; ++a)
             {
-              const auto *entries =
-                hanging_constraints.get_constraint_entries(dofs[fe.component_to_system_index(0, a)]);
+              const auto *entries = hanging_constraints.get_constraint_entries(
+                dofs[fe.component_to_system_index(0, a)]);
               if (entries == nullptr)
                 continue;
               Point<dim> x;
@@ -460,7 +464,8 @@ namespace WheelRail
                 {
                   const auto it = position.find(entry.first);
                   AssertThrow(it != position.end(),
-                              ExcMessage("Internal error: master vertex of a hanging node not found."));
+                              ExcMessage(
+                                "Internal error: master vertex of a hanging node not found."));
                   x += entry.second * it->second;
                 }
               cell->vertex(a) = x;
@@ -486,8 +491,8 @@ namespace WheelRail
         dof_of[ci.first][ci.second] = i;
       }
 
-    const unsigned int n_local = vector_partitioner->locally_owned_size() +
-                                 vector_partitioner->n_ghost_indices();
+    const unsigned int n_local =
+      vector_partitioner->locally_owned_size() + vector_partitioner->n_ghost_indices();
     node_points.assign(n_local, Point<dim>());
     node_material.assign(n_local, numbers::invalid_material_id);
     node_component.assign(n_local, 0);
@@ -502,9 +507,9 @@ namespace WheelRail
             for (unsigned int d = 0; d < dim; ++d)
               {
                 const unsigned int i = vector_partitioner->global_to_local(dofs[dof_of[d][a]]);
-                node_points[i]    = cell->vertex(a);
-                node_material[i]  = cell->material_id();
-                node_component[i] = d;
+                node_points[i]       = cell->vertex(a);
+                node_material[i]     = cell->material_id();
+                node_component[i]    = d;
               }
           for (const unsigned int face : cell->face_indices())
             if (cell->face(face)->at_boundary())
@@ -531,8 +536,8 @@ namespace WheelRail
     QGauss<dim>   quadrature(2);
     FEValues<dim> fe_values(fe_scalar, quadrature, update_gradients | update_JxW_values);
 
-    double min_edge = std::numeric_limits<double>::max(), min_size = min_edge,
-           min_le = min_edge, min_jac = min_edge, max_aspect = 0, min_dt = min_edge;
+    double min_edge = std::numeric_limits<double>::max(), min_size = min_edge, min_le = min_edge,
+           min_jac = min_edge, max_aspect = 0, min_dt = min_edge;
 
     // Cell order: first the families, the 8 children of a parent that are
     // all active and locally owned, in child order and in the order of
@@ -566,100 +571,100 @@ namespace WheelRail
     }
 
     for (unsigned int c = 0; c < n_cells; ++c)
-        {
-          const auto &       cell  = cells[c];
-          const unsigned int batch = c / W, lane = c % W;
-          double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
-          fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(cell));
-          cell->get_dof_indices(dofs);
+      {
+        const auto        &cell  = cells[c];
+        const unsigned int batch = c / W, lane = c % W;
+        double            *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(cell));
+        cell->get_dof_indices(dofs);
 
-          double B[8][3] = {}, V0 = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+        double B[8][3] = {}, V0 = 0;
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          {
+            V0 += fe_values.JxW(q);
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int j = 0; j < 3; ++j)
+                B[a][j] += fe_values.shape_grad(a, q)[j] * fe_values.JxW(q);
+          }
+        double BB = 0;
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int j = 0; j < 3; ++j)
             {
-              V0 += fe_values.JxW(q);
+              data[(Field::b + a * 3 + j) * W + lane] = B[a][j] / V0;
+              BB += B[a][j] * B[a][j];
+            }
+        for (unsigned int al = 0; al < 4; ++al)
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              double s = 0;
               for (unsigned int a = 0; a < 8; ++a)
-                for (unsigned int j = 0; j < 3; ++j)
-                  B[a][j] += fe_values.shape_grad(a, q)[j] * fe_values.JxW(q);
+                s += hg[al][a] * cell->vertex(a)[j];
+              data[(Field::c + al * 3 + j) * W + lane] = s;
             }
-          double BB = 0;
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int j = 0; j < 3; ++j)
+
+        // sizes, L_e = V / A_max, quality
+        double emin = std::numeric_limits<double>::max(), emax = 0;
+        for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
+          {
+            const double e = cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1));
+            emin           = std::min(emin, e);
+            emax           = std::max(emax, e);
+          }
+        double amax = 0;
+        for (const unsigned int face : cell->face_indices())
+          {
+            const auto fc = cell->face(face);
+            amax          = std::max(amax,
+                            0.5 * cross_product_3d(fc->vertex(3) - fc->vertex(0),
+                                                   fc->vertex(2) - fc->vertex(1))
+                                    .norm());
+          }
+        const double Le = V0 / amax;
+        for (unsigned int a = 0; a < 8; ++a)
+          {
+            Tensor<1, dim> e[3];
+            double         sign = 1;
+            for (unsigned int d = 0; d < 3; ++d)
               {
-                data[(Field::b + a * 3 + j) * W + lane] = B[a][j] / V0;
-                BB += B[a][j] * B[a][j];
+                e[d] = cell->vertex(a ^ (1u << d)) - cell->vertex(a);
+                if (a & (1u << d))
+                  sign = -sign;
               }
-          for (unsigned int al = 0; al < 4; ++al)
-            for (unsigned int j = 0; j < 3; ++j)
-              {
-                double s = 0;
-                for (unsigned int a = 0; a < 8; ++a)
-                  s += hg[al][a] * cell->vertex(a)[j];
-                data[(Field::c + al * 3 + j) * W + lane] = s;
-              }
+            const double det = sign * (e[0] * cross_product_3d(e[1], e[2]));
+            min_jac          = std::min(min_jac, det / (e[0].norm() * e[1].norm() * e[2].norm()));
+          }
+        min_edge   = std::min(min_edge, emin);
+        min_size   = std::min(min_size, emax);
+        min_le     = std::min(min_le, Le);
+        max_aspect = std::max(max_aspect, emax / emin);
 
-          // sizes, L_e = V / A_max, quality
-          double emin = std::numeric_limits<double>::max(), emax = 0;
-          for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
-            {
-              const double e = cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1));
-              emin           = std::min(emin, e);
-              emax           = std::max(emax, e);
-            }
-          double amax = 0;
-          for (const unsigned int face : cell->face_indices())
-            {
-              const auto fc = cell->face(face);
-              amax = std::max(amax,
-                              0.5 * cross_product_3d(fc->vertex(3) - fc->vertex(0),
-                                                     fc->vertex(2) - fc->vertex(1))
-                                      .norm());
-            }
-          const double Le = V0 / amax;
-          for (unsigned int a = 0; a < 8; ++a)
-            {
-              Tensor<1, dim> e[3];
-              double         sign = 1;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  e[d] = cell->vertex(a ^ (1u << d)) - cell->vertex(a);
-                  if (a & (1u << d))
-                    sign = -sign;
-                }
-              const double det = sign * (e[0] * cross_product_3d(e[1], e[2]));
-              min_jac = std::min(min_jac, det / (e[0].norm() * e[1].norm() * e[2].norm()));
-            }
-          min_edge   = std::min(min_edge, emin);
-          min_size   = std::min(min_size, emax);
-          min_le     = std::min(min_le, Le);
-          max_aspect = std::max(max_aspect, emax / emin);
+        // damping: beta_e = 2 COEF / omega_e (omega_e = 2c/L_e) or Rayleigh
+        double beta = 0;
+        if (prm.solver.damping_model == "stiffness")
+          beta = prm.solver.stiffness_damping_coefficient * Le / c_wave;
+        else if (prm.solver.damping_model == "Rayleigh")
+          beta = prm.solver.rayleigh_beta;
+        const double omega = 2. * c_wave / Le;
+        const double xi    = 0.5 * beta * omega;
+        min_dt             = std::min(min_dt, 2. / omega * (std::sqrt(1. + xi * xi) - xi));
 
-          // damping: beta_e = 2 COEF / omega_e (omega_e = 2c/L_e) or Rayleigh
-          double beta = 0;
-          if (prm.solver.damping_model == "stiffness")
-            beta = prm.solver.stiffness_damping_coefficient * Le / c_wave;
-          else if (prm.solver.damping_model == "Rayleigh")
-            beta = prm.solver.rayleigh_beta;
-          const double omega = 2. * c_wave / Le;
-          const double xi    = 0.5 * beta * omega;
-          min_dt = std::min(min_dt, 2. / omega * (std::sqrt(1. + xi * xi) - xi));
+        const double k_unit                            = (lambda + 2. * mu) * BB / (8. * V0);
+        data[Field::volume * W + lane]                 = V0;
+        data[Field::kappa * W + lane]                  = qm * k_unit;
+        batch_kappa_ref[std::size_t(batch) * W + lane] = reference_hourglass_coefficient * k_unit;
+        data[Field::beta * W + lane]                   = beta;
 
-          const double k_unit = (lambda + 2. * mu) * BB / (8. * V0);
-          data[Field::volume * W + lane]    = V0;
-          data[Field::kappa * W + lane]     = qm * k_unit;
-          batch_kappa_ref[std::size_t(batch) * W + lane] = reference_hourglass_coefficient * k_unit;
-          data[Field::beta * W + lane]      = beta;
-
-          for (unsigned int a = 0; a < 8; ++a)
-            {
-              const auto idx = vector_partitioner->global_to_local(dofs[dof_of[0][a]]);
-              for (unsigned int d = 1; d < dim; ++d)
-                AssertThrow(vector_partitioner->global_to_local(dofs[dof_of[d][a]]) == idx + d,
-                            ExcMessage("Internal error: vertex DoFs not contiguous."));
-              batch_nodes[(std::size_t(batch) * 8 + a) * W + lane] = idx;
-            }
-          batch_cell_index[std::size_t(batch) * W + lane] = cell->active_cell_index();
-          batch_material[std::size_t(batch) * W + lane]   = cell->material_id();
-        }
+        for (unsigned int a = 0; a < 8; ++a)
+          {
+            const auto idx = vector_partitioner->global_to_local(dofs[dof_of[0][a]]);
+            for (unsigned int d = 1; d < dim; ++d)
+              AssertThrow(vector_partitioner->global_to_local(dofs[dof_of[d][a]]) == idx + d,
+                          ExcMessage("Internal error: vertex DoFs not contiguous."));
+            batch_nodes[(std::size_t(batch) * 8 + a) * W + lane] = idx;
+          }
+        batch_cell_index[std::size_t(batch) * W + lane] = cell->active_cell_index();
+        batch_material[std::size_t(batch) * W + lane]   = cell->material_id();
+      }
 
     // Batches that are families (see family_offset): the node map of all
     // 64 (vertex, lane) pairs must be that of the parent's grid. Checked on
@@ -678,7 +683,7 @@ namespace WheelRail
           for (unsigned int l = 0; l < W && family; ++l)
             {
               const unsigned int idx = batch_nodes[(std::size_t(b) * 8 + a) * W + l];
-              unsigned int &     g   = grid[family_offset[a] + family_offset[l]];
+              unsigned int      &g   = grid[family_offset[a] + family_offset[l]];
               if (g == numbers::invalid_unsigned_int)
                 g = idx;
               else
@@ -703,8 +708,7 @@ namespace WheelRail
                 ExcMessage("The mesh has an inverted or degenerate cell (smallest "
                            "scaled Jacobian <= 0): check Geometry/Bar/Distortion "
                            "and the Geometry parameters."));
-    stable_dt = prm.solver.courant_factor *
-                Utilities::MPI::min(min_dt, mpi_communicator);
+    stable_dt = prm.solver.courant_factor * Utilities::MPI::min(min_dt, mpi_communicator);
   }
 
 
@@ -712,7 +716,7 @@ namespace WheelRail
   void
   ExplicitSolver::setup_mass_and_loads()
   {
-    const double rho = prm.material.density;
+    const double  rho = prm.material.density;
     FE_Q<dim>     fe_scalar(1);
     QGauss<dim>   quadrature(2);
     FEValues<dim> fe_values(fe_scalar, quadrature, update_values | update_JxW_values);
@@ -745,7 +749,7 @@ namespace WheelRail
     // gravity load: g times the condensed row-sum mass (= condensed rho g N)
     for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
       {
-        f_ext.local_element(i) = mass.local_element(i) * prm.solver.gravity[node_component[i]];
+        f_ext.local_element(i)    = mass.local_element(i) * prm.solver.gravity[node_component[i]];
         inv_mass.local_element(i) = mass.local_element(i) > 0 ? 1. / mass.local_element(i) : 0.;
       }
     // hanging DoFs carry neither mass nor load: they follow their masters
@@ -786,8 +790,8 @@ namespace WheelRail
                 {
                   if (fe.face_system_to_component_index(k).first != 0)
                     continue;
-                  const unsigned int i = vector_partitioner->global_to_local(face_dofs[k]);
-                  const auto fixed     = prm.boundary.fixed.find(id);
+                  const unsigned int i     = vector_partitioner->global_to_local(face_dofs[k]);
+                  const auto         fixed = prm.boundary.fixed.find(id);
                   if (fixed != prm.boundary.fixed.end())
                     for (unsigned int d = 0; d < dim; ++d)
                       if (fixed->second.find("xyz"[d]) != std::string::npos)
@@ -841,7 +845,7 @@ namespace WheelRail
     wheelset = ws;
     if (wheelset == nullptr)
       return;
-    const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
+    const Point<dim> centre   = Geometry::wheel_centre(prm.geometry);
     double           local[2] = {0, 0};
     for (const auto &p : prescribed)
       if (p.kind == 3 && p.component == 0)
@@ -859,7 +863,9 @@ namespace WheelRail
           wheel_inertia += mass.local_element(i) * (r[0] * r[0] + r[2] * r[2]);
         }
     double global[2];
-    Utilities::MPI::sum(ArrayView<const double>(local, 2), mpi_communicator, ArrayView<double>(global, 2));
+    Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                        mpi_communicator,
+                        ArrayView<double>(global, 2));
     wheelset->set_bore_inertia(global[0],
                                global[1],
                                total_mass(Geometry::MaterialIds::wheel),
@@ -886,12 +892,12 @@ namespace WheelRail
                         cell->face(face)->boundary_id()) != prm.boundary.applied_force_ids.end())
             {
               const auto   fc = cell->face(face);
-              const double a  = 0.5 * cross_product_3d(fc->vertex(3) - fc->vertex(0),
-                                                      fc->vertex(2) - fc->vertex(1))
-                                       .norm();
+              const double a =
+                0.5 * cross_product_3d(fc->vertex(3) - fc->vertex(0), fc->vertex(2) - fc->vertex(1))
+                        .norm();
               for (unsigned int v = 0; v < 4; ++v)
-                area.local_element(vector_partitioner->global_to_local(fc->vertex_dof_index(v, 0))) +=
-                  0.25 * a;
+                area.local_element(
+                  vector_partitioner->global_to_local(fc->vertex_dof_index(v, 0))) += 0.25 * a;
             }
     condense(area);
     area.compress(VectorOperation::add);
@@ -963,9 +969,8 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::set_displacement(
-    const std::function<Tensor<1, dim>(const Point<dim> &)> &u_of_X,
-    const types::material_id                               material)
+  ExplicitSolver::set_displacement(const std::function<Tensor<1, dim>(const Point<dim> &)> &u_of_X,
+                                   const types::material_id material)
   {
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       for (unsigned int lane = 0; lane < W; ++lane)
@@ -974,7 +979,7 @@ namespace WheelRail
              batch_material[std::size_t(batch) * W + lane] == material))
           for (unsigned int a = 0; a < 8; ++a)
             {
-              const unsigned int idx = batch_nodes[(std::size_t(batch) * 8 + a) * W + lane];
+              const unsigned int   idx   = batch_nodes[(std::size_t(batch) * 8 + a) * W + lane];
               const Tensor<1, dim> value = u_of_X(node_points[idx]);
               for (unsigned int d = 0; d < dim; ++d)
                 u.local_element(idx + d) = value[d];
@@ -1010,15 +1015,15 @@ namespace WheelRail
   {
     for (unsigned int k = 0; k < f_ext.locally_owned_size(); ++k)
       if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] != 1)
-        f_ext.local_element(k) +=
-          factor * mass.local_element(k) * omega * omega * (node_points[k] - centre)[node_component[k]];
+        f_ext.local_element(k) += factor * mass.local_element(k) * omega * omega *
+                                  (node_points[k] - centre)[node_component[k]];
   }
 
 
 
   void
   ExplicitSolver::set_rolling_velocity(const Tensor<1, dim> &V,
-                                       const Point<dim> &    centre,
+                                       const Point<dim>     &centre,
                                        const double          omega)
   {
     // volume-weighted nodal average of H = grad u: gradient[j] holds H_ij at
@@ -1031,7 +1036,7 @@ namespace WheelRail
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
         const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
-        const double *      data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
         const unsigned int  n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int l = 0; l < n_valid; ++l)
           {
@@ -1057,10 +1062,12 @@ namespace WheelRail
         const unsigned int i = node_component[k];
         double             H[3];
         for (unsigned int j = 0; j < 3; ++j)
-          H[j] = weight.local_element(k) > 0 ? gradient[j].local_element(k) / weight.local_element(k) : 0.;
+          H[j] = weight.local_element(k) > 0 ?
+                   gradient[j].local_element(k) / weight.local_element(k) :
+                   0.;
         if (node_material[k] == Geometry::MaterialIds::wheel)
           {
-            const Tensor<1, dim> r = node_points[k] - centre;
+            const Tensor<1, dim> r    = node_points[k] - centre;
             const double         w[3] = {omega * r[2], 0., -omega * r[0]};
             v.local_element(k)        = V[i] + w[i] + H[0] * w[0] + H[1] * w[1] + H[2] * w[2];
           }
@@ -1078,7 +1085,7 @@ namespace WheelRail
   double
   ExplicitSolver::assemble_forces(const VectorType &u_in,
                                   const VectorType *v_in,
-                                  VectorType &      f_out,
+                                  VectorType       &f_out,
                                   const bool        with_contact,
                                   const bool        advance,
                                   const bool        f_is_zero)
@@ -1092,9 +1099,9 @@ namespace WheelRail
                            f_out.get_partitioner()->n_ghost_indices(),
                          [](const double x) { return x == 0; }),
              ExcInternalError());
-    const double *U = u_in.begin();
-    const double *V = v_in ? v_in->begin() : nullptr;
-    double *      F = f_out.begin();
+    const double *U       = u_in.begin();
+    const double *V       = v_in ? v_in->begin() : nullptr;
+    double       *F       = f_out.begin();
     const bool    damping = (v_in != nullptr) && prm.solver.damping_model != "none";
 
     alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
@@ -1102,11 +1109,11 @@ namespace WheelRail
     // a family's grid values per component, padded: the permutations read
     // 16 values from any vertex's offset (at most 13 + 15 = 28)
     alignas(64) double ug[3][32] = {}, vg[3][32] = {};
-    double power = 0;
+    double             power = 0;
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
         const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
-        const double *      data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const double       *data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
         if (batch + prefetch_distance < n_batches)
           prefetch_batch(batch + prefetch_distance);
         const unsigned int family = batch_family[batch];
@@ -1129,10 +1136,14 @@ namespace WheelRail
                 {
                   const unsigned int o = family_offset[a];
                   store(&ub[(a * 3 + d) * W],
-                        __builtin_shuffle(WheelRail::load(&ug[d][o]), WheelRail::load(&ug[d][o + W]), family_lanes));
+                        __builtin_shuffle(WheelRail::load(&ug[d][o]),
+                                          WheelRail::load(&ug[d][o + W]),
+                                          family_lanes));
                   if (damping)
                     store(&vb[(a * 3 + d) * W],
-                          __builtin_shuffle(WheelRail::load(&vg[d][o]), WheelRail::load(&vg[d][o + W]), family_lanes));
+                          __builtin_shuffle(WheelRail::load(&vg[d][o]),
+                                            WheelRail::load(&vg[d][o + W]),
+                                            family_lanes));
                 }
           }
         else
@@ -1205,8 +1216,8 @@ namespace WheelRail
     // results. Measured (./run.sh bench, 2 ranks, 1000 steps): elements
     // 17.7 -> 14.7-15.6 s. Prefetching the gathered nodal values as well
     // was slower (17.9 s): those mostly hit the cache already.
-    const char *data = reinterpret_cast<const char *>(
-      &batch_data[std::size_t(batch) * Field::n_fields * W]);
+    const char *data =
+      reinterpret_cast<const char *>(&batch_data[std::size_t(batch) * Field::n_fields * W]);
     for (unsigned int offset = 0; offset < Field::n_fields * W * sizeof(double); offset += 64)
       __builtin_prefetch(data + offset, 0, 0);
   }
@@ -1255,7 +1266,9 @@ namespace WheelRail
       if (node_material[i] == material)
         local[node_component[i]] += mass.local_element(i) * v.local_element(i);
     double global[3];
-    Utilities::MPI::sum(ArrayView<const double>(local, 3), mpi_communicator, ArrayView<double>(global, 3));
+    Utilities::MPI::sum(ArrayView<const double>(local, 3),
+                        mpi_communicator,
+                        ArrayView<double>(global, 3));
     return Tensor<1, dim>({global[0], global[1], global[2]});
   }
 
@@ -1273,7 +1286,9 @@ namespace WheelRail
             local[3] += 1;
         }
     double global[4];
-    Utilities::MPI::sum(ArrayView<const double>(local, 4), mpi_communicator, ArrayView<double>(global, 4));
+    Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                        mpi_communicator,
+                        ArrayView<double>(global, 4));
     Tensor<1, dim> mean;
     for (unsigned int d = 0; d < dim; ++d)
       mean[d] = global[3] > 0 ? global[d] / global[3] : 0.;
@@ -1283,7 +1298,7 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::assemble_stiffness(TrilinosWrappers::SparseMatrix &  matrix,
+  ExplicitSolver::assemble_stiffness(TrilinosWrappers::SparseMatrix  &matrix,
                                      const AffineConstraints<double> &constraints) const
   {
     FullMatrix<double>                   K(24, 24);
@@ -1293,8 +1308,7 @@ namespace WheelRail
         {
           const double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
           const auto    D    = [&](const unsigned int field) { return data[field * W + l]; };
-          const double  V0 = D(Field::volume), la = lame_lambda, mu = lame_mu,
-                       ka = D(Field::kappa);
+          const double  V0 = D(Field::volume), la = lame_lambda, mu = lame_mu, ka = D(Field::kappa);
           // gamma_alpha,a = h_alpha,a - c_alpha . b_a
           double gamma[4][8];
           for (unsigned int al = 0; al < 4; ++al)
@@ -1334,12 +1348,12 @@ namespace WheelRail
   void
   ExplicitSolver::strain_energies(Energies &e) const
   {
-    const double *U = u.begin();
+    const double *U  = u.begin();
     double        ie = 0, hge = 0, hge_ref = 0;
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
-        const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
-        const double *      data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
         const unsigned int  n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int l = 0; l < n_valid; ++l)
           {
@@ -1356,8 +1370,7 @@ namespace WheelRail
                   EE += E[i][j] * E[i][j];
                 }
             const double trE = E[0][0] + E[1][1] + E[2][2];
-            ie += data[Field::volume * W + l] *
-                  (0.5 * lame_lambda * trE * trE + lame_mu * EE);
+            ie += data[Field::volume * W + l] * (0.5 * lame_lambda * trE * trE + lame_mu * EE);
             double gg = 0;
             for (unsigned int al = 0; al < 4; ++al)
               for (unsigned int i = 0; i < 3; ++i)
@@ -1404,7 +1417,7 @@ namespace WheelRail
     clock                = Clock::now();
 
     // applied forces at t_n (enter f with the sign of internal forces)
-    double work_step = 0;
+    double         work_step = 0;
     Tensor<1, dim> applied_total;
     if (applied_force)
       {
@@ -1415,14 +1428,14 @@ namespace WheelRail
           f.local_element(i) -= w * applied_total[d];
       }
 
-    double *           U = u.begin();
-    double *           V = v.begin();
+    double *U = u.begin();
+    double *V = v.begin();
     // applied-force work over the step, with the old velocity (the new one
     // is added below)
     for (const auto &[i, d, w] : applied)
       work_step += 0.5 * h * w * applied_total[d] * V[i];
-    double *           F = f.begin();
-    const double *     G = f_ext.begin();
+    double       *F = f.begin();
+    const double *G = f_ext.begin();
     // the net forces that the prescribed DoFs and the axle need after the
     // update, which clears f behind itself (f = 0 for the next step's
     // assembly without a pass of its own over the vector)
@@ -1432,8 +1445,8 @@ namespace WheelRail
         for (unsigned int c = 0; c < n_components; ++c)
           p.net_force[c] = G[p.index + c] - F[p.index + c];
       }
-    const double *     IM = inv_mass.begin();
-    const double *     M  = mass.begin();
+    const double      *IM = inv_mass.begin();
+    const double      *M  = mass.begin();
     const unsigned int n  = u.locally_owned_size();
     double             ke = 0;
     if (energies == nullptr)
@@ -1453,7 +1466,7 @@ namespace WheelRail
             const double vo = V[i];
             V[i] += h * IM[i] * (G[i] - F[i]);
             U[i] += dt * V[i];
-            F[i] = 0;
+            F[i]            = 0;
             const double va = first ? vo : 0.5 * (vo + V[i]);
             if (IM[i] > 0)
               ke += 0.5 * M[i] * va * va;
@@ -1467,7 +1480,7 @@ namespace WheelRail
     // the rigid axle: the FE forces on the bore nodes and their moment
     if (wheelset)
       {
-        const Point<dim> axle = wheelset->axle_position();
+        const Point<dim> axle     = wheelset->axle_position();
         double           local[4] = {0, 0, 0, 0};
         // per bore vertex (its x-DoF; y and z follow contiguously)
         for (const auto &p : prescribed)
@@ -1500,12 +1513,11 @@ namespace WheelRail
       {
         double u_new = p.u_prev;
         if (p.kind == 1)
-          u_new = p.u_prev + dt * prescribed_velocity->value(node_points[p.index],
-                                                              p.component);
+          u_new = p.u_prev + dt * prescribed_velocity->value(node_points[p.index], p.component);
         else if (p.kind == 2)
           {
             const Tensor<1, dim> r = node_points[p.index] - centre;
-            u_new = (rotate_about_y(r, omega * t_new) - r)[p.component];
+            u_new                  = (rotate_about_y(r, omega * t_new) - r)[p.component];
           }
         else if (p.kind == 3)
           u_new = wheelset->bore_displacement(node_points[p.index])[p.component];
@@ -1633,11 +1645,11 @@ namespace WheelRail
   ExplicitSolver::cell_stresses() const
   {
     std::vector<CellStress> result(triangulation.n_active_cells());
-    const double *          U = u.begin();
+    const double           *U = u.begin();
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
         const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
-        const double *      data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
         const unsigned int  n_valid = std::min(W, n_cells - batch * W);
         for (unsigned int l = 0; l < n_valid; ++l)
           {
@@ -1649,13 +1661,13 @@ namespace WheelRail
                 H[i][j] = h[i][j];
             const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
             const Tensor<2, dim> E = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
-            const Tensor<2, dim> S = lame_lambda * trace(E) *
-                                       Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
-                                     2. * lame_mu * E;
+            const Tensor<2, dim> S =
+              lame_lambda * trace(E) * Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
+              2. * lame_mu * E;
             const Tensor<2, dim> sigma = F * S * transpose(F) / determinant(F);
-            const Tensor<2, dim> dev   = sigma - trace(sigma) / 3. *
-                                                 Tensor<2, dim>(unit_symmetric_tensor<dim>());
-            CellStress &cs           = result[batch_cell_index[std::size_t(batch) * W + l]];
+            const Tensor<2, dim> dev =
+              sigma - trace(sigma) / 3. * Tensor<2, dim>(unit_symmetric_tensor<dim>());
+            CellStress &cs            = result[batch_cell_index[std::size_t(batch) * W + l]];
             cs.second_piola_kirchhoff = S;
             cs.von_mises              = std::sqrt(1.5 * scalar_product(dev, dev));
           }
@@ -1703,7 +1715,9 @@ namespace WheelRail
           local[3] += 1;
       }
     double global[4];
-    Utilities::MPI::sum(ArrayView<const double>(local, 4), mpi_communicator, ArrayView<double>(global, 4));
+    Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                        mpi_communicator,
+                        ArrayView<double>(global, 4));
     Tensor<1, dim> mean;
     if (global[3] > 0)
       for (unsigned int d = 0; d < dim; ++d)

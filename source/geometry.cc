@@ -46,19 +46,13 @@ namespace WheelRail
         Point<dim>
         pull_back(const Point<dim> &p) const override
         {
-          return Point<dim>(p[0],
-                            p[1],
-                            -height + (p[2] + height) * height /
-                                        (top(p[1]) + height));
+          return Point<dim>(p[0], p[1], -height + (p[2] + height) * height / (top(p[1]) + height));
         }
 
         Point<dim>
         push_forward(const Point<dim> &q) const override
         {
-          return Point<dim>(q[0],
-                            q[1],
-                            -height + (q[2] + height) / height *
-                                        (top(q[1]) + height));
+          return Point<dim>(q[0], q[1], -height + (q[2] + height) / height * (top(q[1]) + height));
         }
 
         std::unique_ptr<Manifold<dim>>
@@ -129,13 +123,13 @@ namespace WheelRail
        */
       template <typename PositionFunction>
       void
-      add_block(const unsigned int         nx,
-                const unsigned int         ny,
-                const unsigned int         nz,
-                const bool                 periodic_i,
-                const types::material_id   material,
-                const PositionFunction &   position,
-                std::vector<Point<dim>> &  vertices,
+      add_block(const unsigned int          nx,
+                const unsigned int          ny,
+                const unsigned int          nz,
+                const bool                  periodic_i,
+                const types::material_id    material,
+                const PositionFunction     &position,
+                std::vector<Point<dim>>    &vertices,
                 std::vector<CellData<dim>> &cells)
       {
         const unsigned int offset = vertices.size();
@@ -153,8 +147,7 @@ namespace WheelRail
               {
                 CellData<dim> cell;
                 for (unsigned int v = 0; v < 8; ++v)
-                  cell.vertices[v] =
-                    index(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1));
+                  cell.vertices[v] = index(i + (v & 1), j + ((v >> 1) & 1), k + ((v >> 2) & 1));
                 cell.material_id = material;
                 cells.push_back(cell);
               }
@@ -189,8 +182,7 @@ namespace WheelRail
       {
         double h = 0;
         for (unsigned int l = 0; l < GeometryInfo<dim>::lines_per_cell; ++l)
-          h = std::max(h,
-                       cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
+          h = std::max(h, cell->line(l)->vertex(0).distance(cell->line(l)->vertex(1)));
         return h;
       }
 
@@ -207,7 +199,7 @@ namespace WheelRail
       std::array<double, 3>
       chart_coordinates(const GeometryParameters &p,
                         const types::material_id  material,
-                        const Point<dim> &        x,
+                        const Point<dim>         &x,
                         const double              theta_ref)
       {
         if (material == MaterialIds::rail)
@@ -220,11 +212,8 @@ namespace WheelRail
         const Point<dim> centre = wheel_centre(p);
         const double     dx     = x[0] - centre[0];
         const double     dz     = x[2] - centre[2];
-        const double     theta =
-          theta_ref + std::remainder(std::atan2(dx, -dz) - theta_ref, 2 * M_PI);
-        return {{p.wheel_radius * theta,
-                 x[1],
-                 p.wheel_radius - std::sqrt(dx * dx + dz * dz)}};
+        const double theta = theta_ref + std::remainder(std::atan2(dx, -dz) - theta_ref, 2 * M_PI);
+        return {{p.wheel_radius * theta, x[1], p.wheel_radius - std::sqrt(dx * dx + dz * dz)}};
       }
 
 
@@ -278,7 +267,7 @@ namespace WheelRail
         if (material == MaterialIds::rail)
           {
             b.has_zone = p.zone_length > 0;
-            b.zone     = {{{-0.5 * p.zone_length, -w, 0}}, {{0.5 * p.zone_length, w, p.zone_depth}}};
+            b.zone = {{{-0.5 * p.zone_length, -w, 0}}, {{0.5 * p.zone_length, w, p.zone_depth}}};
             b.has_path = p.path_cell_size > 0;
             b.path     = {{{p.rail_start_x, -w, 0}}, {{p.rail_end_x, w, p.zone_depth}}};
           }
@@ -312,23 +301,26 @@ namespace WheelRail
        * cells only (the caller below returns the bar's "no refinement").
        */
       double
-      target_size(const GeometryParameters &p,
-                  const types::material_id  material,
+      target_size(const GeometryParameters    &p,
+                  const types::material_id     material,
                   const std::array<double, 3> &centre,
-                  const ChartBox &          cell_box,
-                  const double              coarse,
-                  const bool                whole_zone)
+                  const ChartBox              &cell_box,
+                  const double                 coarse,
+                  const bool                   whole_zone)
       {
         const double          g = p.grading;
         const RefinementBoxes b = refinement_boxes(p, material);
-        double h = (material == MaterialIds::rail) ? coarse : coarse + g * centre[2];
+        double                h = (material == MaterialIds::rail) ? coarse : coarse + g * centre[2];
         if (b.has_zone)
-          h = std::min(h, whole_zone && cell_box.overlaps(b.zone) ? p.h_min :
-                                                      p.h_min + g * b.zone.distance(centre));
+          h = std::min(h,
+                       whole_zone && cell_box.overlaps(b.zone) ?
+                         p.h_min :
+                         p.h_min + g * b.zone.distance(centre));
         if (b.has_path)
           {
             const double hp = std::max(p.path_cell_size, p.h_min);
-            h = std::min(h, whole_zone && cell_box.overlaps(b.path) ? hp : hp + g * b.path.distance(centre));
+            h               = std::min(
+              h, whole_zone && cell_box.overlaps(b.path) ? hp : hp + g * b.path.distance(centre));
           }
         return h;
       }
@@ -366,7 +358,7 @@ namespace WheelRail
       template <typename CellIterator>
       double
       target_size(const GeometryParameters &p,
-                  const CellIterator &      cell,
+                  const CellIterator       &cell,
                   const double              coarse,
                   const bool                whole_zone)
       {
@@ -388,16 +380,15 @@ namespace WheelRail
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
               {
-                const Point<dim> c   = cell->face(f)->center();
-                const double     eps = 1e-6;
+                const Point<dim>   c   = cell->face(f)->center();
+                const double       eps = 1e-6;
                 types::boundary_id id;
                 switch (cell->material_id())
                   {
                     case MaterialIds::wheel:
                       {
                         const double r = std::hypot(c[0] - centre[0], c[2] - centre[2]);
-                        if (std::abs(std::abs(c[1]) - 0.5 * p.tread_width) <
-                            eps * p.tread_width)
+                        if (std::abs(std::abs(c[1]) - 0.5 * p.tread_width) < eps * p.tread_width)
                           id = BoundaryIds::wheel_side;
                         else if (r > 0.5 * (p.wheel_radius + p.bore_radius))
                           id = BoundaryIds::wheel_tread;
@@ -409,15 +400,15 @@ namespace WheelRail
                       {
                         // classify by the face's vertices in chart space: a
                         // curved face's centre lies below the arc
-                        const double H = p.rail_head_height;
-                        bool top = true, bottom = true, side = true;
+                        const double H   = p.rail_head_height;
+                        bool         top = true, bottom = true, side = true;
                         for (unsigned int v = 0; v < 4; ++v)
                           {
                             const Point<dim> q = chart.pull_back(cell->face(f)->vertex(v));
-                            top    = top && std::abs(q[2]) < eps * H;
-                            bottom = bottom && std::abs(q[2] + H) < eps * H;
-                            side   = side && std::abs(std::abs(q[1]) - 0.5 * p.rail_head_width) <
-                                              eps * p.rail_head_width;
+                            top                = top && std::abs(q[2]) < eps * H;
+                            bottom             = bottom && std::abs(q[2] + H) < eps * H;
+                            side = side && std::abs(std::abs(q[1]) - 0.5 * p.rail_head_width) <
+                                             eps * p.rail_head_width;
                           }
                         id = top    ? BoundaryIds::rail_top :
                              bottom ? BoundaryIds::rail_bottom :
@@ -428,12 +419,10 @@ namespace WheelRail
                     case MaterialIds::block:
                     case MaterialIds::plate:
                       {
-                        const bool   block = cell->material_id() == MaterialIds::block;
-                        const double z_bottom =
-                          block ? p.block_gap : -p.plate_size[2];
-                        const double z_top =
-                          block ? p.block_gap + p.block_size[2] : 0.;
-                        const double h = block ? p.block_size[2] : p.plate_size[2];
+                        const bool   block    = cell->material_id() == MaterialIds::block;
+                        const double z_bottom = block ? p.block_gap : -p.plate_size[2];
+                        const double z_top    = block ? p.block_gap + p.block_size[2] : 0.;
+                        const double h        = block ? p.block_size[2] : p.plate_size[2];
                         if (std::abs(c[2] - z_bottom) < eps * h)
                           id = block ? BoundaryIds::block_bottom : BoundaryIds::plate_bottom;
                         else if (std::abs(c[2] - z_top) < eps * h)
@@ -467,12 +456,16 @@ namespace WheelRail
        * at one end is moved to that end if it still covers the zone.
        */
       std::vector<double>
-      aligned_lines(const double a, const double b, const double lo, const double hi, const double h)
+      aligned_lines(const double a,
+                    const double b,
+                    const double lo,
+                    const double hi,
+                    const double h)
       {
         const double       tol = 1e-9 * (b - a);
-        const double       l   = std::max(lo, a), r = std::min(hi, b);
-        const unsigned int n   = std::max(1., std::ceil((r - l) / h - 1e-9));
-        double             z0  = 0.5 * (l + r) - 0.5 * n * h;
+        const double       l = std::max(lo, a), r = std::min(hi, b);
+        const unsigned int n  = std::max(1., std::ceil((r - l) / h - 1e-9));
+        double             z0 = 0.5 * (l + r) - 0.5 * n * h;
         if (lo <= a + tol || (z0 - a < 0.2 * h && a + n * h >= r - tol))
           z0 = a;
         else if (hi >= b - tol || (b - (z0 + n * h) < 0.2 * h && b - n * h <= l + tol))
@@ -498,8 +491,8 @@ namespace WheelRail
 
 
       void
-      build_wheel_and_rail(const GeometryParameters &  p,
-                           std::vector<Point<dim>> &   vertices,
+      build_wheel_and_rail(const GeometryParameters   &p,
+                           std::vector<Point<dim>>    &vertices,
                            std::vector<CellData<dim>> &cells)
       {
         const double coarse = effective_coarse_size(p);
@@ -507,82 +500,81 @@ namespace WheelRail
         // Wheel: (theta, y, radial) block, theta from the lowest point
         // towards +x, radial index from the tread inwards; coarse cells of
         // about 4 x the coarse size at the tread, refined later.
-        const double R = p.wheel_radius;
+        const double R       = p.wheel_radius;
         unsigned int n_theta = p.wheel_circumferential_cells;
         if (n_theta == 0)
-          n_theta = 4 * static_cast<unsigned int>(
-                          std::ceil(2 * M_PI * R / (4 * 4 * coarse)));
-        n_theta = std::max(n_theta, 8u);
+          n_theta = 4 * static_cast<unsigned int>(std::ceil(2 * M_PI * R / (4 * 4 * coarse)));
+        n_theta              = std::max(n_theta, 8u);
         const double d_theta = 2 * M_PI / n_theta;
         // geometric radial layers with about square cells in (r, theta)
-        const unsigned int n_radial = std::max<unsigned int>(
-          1,
-          std::round(std::log(p.bore_radius / R) / std::log(1 - d_theta)));
-        const double ratio   = std::pow(p.bore_radius / R, 1. / n_radial);
+        const unsigned int n_radial =
+          std::max<unsigned int>(1,
+                                 std::round(std::log(p.bore_radius / R) / std::log(1 - d_theta)));
+        const double       ratio = std::pow(p.bore_radius / R, 1. / n_radial);
         const unsigned int n_y =
           std::max<unsigned int>(1, std::ceil(p.tread_width / (4 * coarse) - 1e-9));
         const Point<dim> centre = wheel_centre(p);
         const bool       align  = p.align_zone && p.zone_length > 0;
         if (!align)
-          add_block(n_theta,
-                    n_y,
-                    n_radial,
-                    true,
-                    MaterialIds::wheel,
-                    [&](unsigned int i, unsigned int j, unsigned int k) {
-                      const double r = R * std::pow(ratio, k);
-                      const double t = i * d_theta;
-                      return Point<dim>(centre[0] + r * std::sin(t),
-                                        -0.5 * p.tread_width + j * p.tread_width / n_y,
-                                        centre[2] - r * std::cos(t));
-                    },
-                    vertices,
-                    cells);
+          add_block(
+            n_theta,
+            n_y,
+            n_radial,
+            true,
+            MaterialIds::wheel,
+            [&](unsigned int i, unsigned int j, unsigned int k) {
+              const double r = R * std::pow(ratio, k);
+              const double t = i * d_theta;
+              return Point<dim>(centre[0] + r * std::sin(t),
+                                -0.5 * p.tread_width + j * p.tread_width / n_y,
+                                centre[2] - r * std::cos(t));
+            },
+            vertices,
+            cells);
         else
           {
             // arc length s = R theta from the lowest point, one turn from
             // the zone's arc on (chart coordinates, see refinement_boxes())
             const double        hw = 4 * coarse, sO = -p.wheel_centre_x;
-            const double        w  = p.zone_half_width, turn = 2 * M_PI * R;
-            std::vector<double> s =
-              aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
-                            sO - 0.5 * p.zone_length + 0.5 * turn,
-                            sO - 0.5 * p.zone_length,
-                            sO + 0.5 * p.zone_length,
-                            hw);
+            const double        w = p.zone_half_width, turn = 2 * M_PI * R;
+            std::vector<double> s = aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
+                                                  sO - 0.5 * p.zone_length + 0.5 * turn,
+                                                  sO - 0.5 * p.zone_length,
+                                                  sO + 0.5 * p.zone_length,
+                                                  hw);
             s.pop_back(); // periodic: the last line is the first
             // the lateral lines half a zone cell off the rail's (see the
             // rail below): symmetric about y = 0, at +-h_min / 2, ...
             const double              shift = 0.5 * p.h_min;
-            const std::vector<double> y     = aligned_lines(
-              -0.5 * p.tread_width, 0.5 * p.tread_width, -w + shift, w + shift, hw);
+            const std::vector<double> y =
+              aligned_lines(-0.5 * p.tread_width, 0.5 * p.tread_width, -w + shift, w + shift, hw);
             // radii: the top layer hw thick over the zone's depth, then
             // geometric layers of about square cells down to the bore
-            std::vector<double> r = {R};
-            const unsigned int  n_top =
-              std::max(1., std::ceil(p.zone_depth / hw - 1e-9));
+            std::vector<double> r     = {R};
+            const unsigned int  n_top = std::max(1., std::ceil(p.zone_depth / hw - 1e-9));
             for (unsigned int k = 1; k <= n_top; ++k)
               r.push_back(R - hw * k);
-            const double r1     = r.back();
-            const double d_mean = 2 * M_PI / s.size();
+            const double       r1      = r.back();
+            const double       d_mean  = 2 * M_PI / s.size();
             const unsigned int n_lower = std::max<unsigned int>(
               1, std::round(std::log(p.bore_radius / r1) / std::log(1 - d_mean)));
             for (unsigned int k = 1; k <= n_lower; ++k)
               r.push_back(k == n_lower ? p.bore_radius :
                                          r1 * std::pow(p.bore_radius / r1, double(k) / n_lower));
-            add_block(s.size(),
-                      y.size() - 1,
-                      r.size() - 1,
-                      true,
-                      MaterialIds::wheel,
-                      [&](unsigned int i, unsigned int j, unsigned int k) {
-                        const double t = s[i] / R;
-                        return Point<dim>(centre[0] + r[k] * std::sin(t),
-                                          y[j],
-                                          centre[2] - r[k] * std::cos(t));
-                      },
-                      vertices,
-                      cells);
+            add_block(
+              s.size(),
+              y.size() - 1,
+              r.size() - 1,
+              true,
+              MaterialIds::wheel,
+              [&](unsigned int i, unsigned int j, unsigned int k) {
+                const double t = s[i] / R;
+                return Point<dim>(centre[0] + r[k] * std::sin(t),
+                                  y[j],
+                                  centre[2] - r[k] * std::cos(t));
+              },
+              vertices,
+              cells);
           }
 
         // Rail head: box (x, y, zeta) pushed onto the arc top.
@@ -592,28 +584,29 @@ namespace WheelRail
         const unsigned int ny = std::ceil(p.rail_head_width / coarse - 1e-9);
         const unsigned int nz = std::ceil(p.rail_head_height / coarse - 1e-9);
         if (!align)
-          add_block(nx,
-                    ny,
-                    nz,
-                    false,
-                    MaterialIds::rail,
-                    [&](unsigned int i, unsigned int j, unsigned int k) {
-                      return chart.push_forward(
-                        Point<dim>(p.rail_start_x + i * L / nx,
-                                   -0.5 * p.rail_head_width + j * p.rail_head_width / ny,
-                                   -p.rail_head_height + k * p.rail_head_height / nz));
-                    },
-                    vertices,
-                    cells);
+          add_block(
+            nx,
+            ny,
+            nz,
+            false,
+            MaterialIds::rail,
+            [&](unsigned int i, unsigned int j, unsigned int k) {
+              return chart.push_forward(
+                Point<dim>(p.rail_start_x + i * L / nx,
+                           -0.5 * p.rail_head_width + j * p.rail_head_width / ny,
+                           -p.rail_head_height + k * p.rail_head_height / nz));
+            },
+            vertices,
+            cells);
         else
           {
             // on the arc top a lateral edge is longer than its chart
             // length (slope s at the aligned block's side): cells of
             // coarse / sqrt(1 + s^2) refine onto at most h_min there
-            const double       w    = p.zone_half_width;
-            const unsigned int n_w  = std::max(1., std::ceil(2 * w / coarse - 1e-9));
-            const double       side = std::min(0.5 * n_w * coarse, 0.5 * p.rail_head_width);
-            const double       rho  = p.rail_profile_radius;
+            const double       w     = p.zone_half_width;
+            const unsigned int n_w   = std::max(1., std::ceil(2 * w / coarse - 1e-9));
+            const double       side  = std::min(0.5 * n_w * coarse, 0.5 * p.rail_head_width);
+            const double       rho   = p.rail_profile_radius;
             const double       slope = side / std::sqrt(rho * rho - side * side);
             const double       h     = coarse / std::sqrt(1 + slope * slope) * (1 - 1e-9);
             // Wheel (slave) and rail (master) nodes must not coincide: with
@@ -630,79 +623,78 @@ namespace WheelRail
               aligned_lines(-0.5 * p.rail_head_width, 0.5 * p.rail_head_width, -w, w, h);
             const std::vector<double> z =
               aligned_lines(-p.rail_head_height, 0, -p.zone_depth, 0, h);
-            add_block(x.size() - 1,
-                      y.size() - 1,
-                      z.size() - 1,
-                      false,
-                      MaterialIds::rail,
-                      [&](unsigned int i, unsigned int j, unsigned int k) {
-                        return chart.push_forward(Point<dim>(x[i], y[j], z[k]));
-                      },
-                      vertices,
-                      cells);
+            add_block(
+              x.size() - 1,
+              y.size() - 1,
+              z.size() - 1,
+              false,
+              MaterialIds::rail,
+              [&](unsigned int i, unsigned int j, unsigned int k) {
+                return chart.push_forward(Point<dim>(x[i], y[j], z[k]));
+              },
+              vertices,
+              cells);
           }
       }
 
 
 
       void
-      build_bar(const GeometryParameters &  p,
-                std::vector<Point<dim>> &   vertices,
+      build_bar(const GeometryParameters   &p,
+                std::vector<Point<dim>>    &vertices,
                 std::vector<CellData<dim>> &cells)
       {
-        const unsigned int nx = p.bar_cells[0], ny = p.bar_cells[1],
-                           nz = p.bar_cells[2];
-        const double hx = p.bar_length / nx, hy = p.bar_width / ny,
-                     hz = p.bar_height / nz;
-        add_block(nx,
-                  ny,
-                  nz,
-                  false,
-                  MaterialIds::bar,
-                  [&](unsigned int i, unsigned int j, unsigned int k) {
-                    Point<dim> x(i * hx, -0.5 * p.bar_width + j * hy,
-                                 -0.5 * p.bar_height + k * hz);
-                    const bool interior = i > 0 && i < nx && j > 0 && j < ny &&
-                                          k > 0 && k < nz;
-                    if (interior && p.bar_distortion > 0)
-                      {
-                        // deterministic pseudo-random direction per vertex
-                        const double a = std::sin(12.9898 * i + 78.233 * j + 37.719 * k);
-                        const double b = std::sin(93.989 * i + 67.345 * j + 11.135 * k);
-                        const double c = std::sin(41.235 * i + 24.414 * j + 73.156 * k);
-                        x[0] += p.bar_distortion * hx * a;
-                        x[1] += p.bar_distortion * hy * b;
-                        x[2] += p.bar_distortion * hz * c;
-                      }
-                    return x;
-                  },
-                  vertices,
-                  cells);
+        const unsigned int nx = p.bar_cells[0], ny = p.bar_cells[1], nz = p.bar_cells[2];
+        const double       hx = p.bar_length / nx, hy = p.bar_width / ny, hz = p.bar_height / nz;
+        add_block(
+          nx,
+          ny,
+          nz,
+          false,
+          MaterialIds::bar,
+          [&](unsigned int i, unsigned int j, unsigned int k) {
+            Point<dim> x(i * hx, -0.5 * p.bar_width + j * hy, -0.5 * p.bar_height + k * hz);
+            const bool interior = i > 0 && i < nx && j > 0 && j < ny && k > 0 && k < nz;
+            if (interior && p.bar_distortion > 0)
+              {
+                // deterministic pseudo-random direction per vertex
+                const double a = std::sin(12.9898 * i + 78.233 * j + 37.719 * k);
+                const double b = std::sin(93.989 * i + 67.345 * j + 11.135 * k);
+                const double c = std::sin(41.235 * i + 24.414 * j + 73.156 * k);
+                x[0] += p.bar_distortion * hx * a;
+                x[1] += p.bar_distortion * hy * b;
+                x[2] += p.bar_distortion * hz * c;
+              }
+            return x;
+          },
+          vertices,
+          cells);
       }
 
 
 
       void
-      build_block_on_plate(const GeometryParameters &  p,
-                           std::vector<Point<dim>> &   vertices,
+      build_block_on_plate(const GeometryParameters   &p,
+                           std::vector<Point<dim>>    &vertices,
                            std::vector<CellData<dim>> &cells)
       {
-        const auto box = [&](const Point<dim> &                lower,
-                             const Tensor<1, dim> &            size,
+        const auto box = [&](const Point<dim>                &lower,
+                             const Tensor<1, dim>            &size,
                              const std::vector<unsigned int> &n,
-                             const types::material_id          material) {
-          add_block(n[0],
-                    n[1],
-                    n[2],
-                    false,
-                    material,
-                    [&](unsigned int i, unsigned int j, unsigned int k) {
-                      return Point<dim>(lower[0] + i * size[0] / n[0],
-                                        lower[1] + j * size[1] / n[1],
-                                        lower[2] + k * size[2] / n[2]);
-                    },
-                    vertices,
-                    cells);
+                             const types::material_id         material) {
+          add_block(
+            n[0],
+            n[1],
+            n[2],
+            false,
+            material,
+            [&](unsigned int i, unsigned int j, unsigned int k) {
+              return Point<dim>(lower[0] + i * size[0] / n[0],
+                                lower[1] + j * size[1] / n[1],
+                                lower[2] + k * size[2] / n[2]);
+            },
+            vertices,
+            cells);
         };
         box(Point<dim>(0, -0.5 * p.plate_size[1], -p.plate_size[2]),
             p.plate_size,
@@ -726,12 +718,12 @@ namespace WheelRail
 
 
     ZoneCells
-    zone_cells(const GeometryParameters &                       p,
+    zone_cells(const GeometryParameters                        &p,
                const types::material_id                         material,
                const parallel::distributed::Triangulation<dim> &triangulation)
     {
-      ZoneCells                 z;
-      const RefinementBoxes     b = refinement_boxes(p, material);
+      ZoneCells             z;
+      const RefinementBoxes b = refinement_boxes(p, material);
       if (b.has_zone)
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() && cell->material_id() == material)
@@ -757,8 +749,7 @@ namespace WheelRail
       switch (material)
         {
           case MaterialIds::wheel:
-            return M_PI *
-                   (p.wheel_radius * p.wheel_radius - p.bore_radius * p.bore_radius) *
+            return M_PI * (p.wheel_radius * p.wheel_radius - p.bore_radius * p.bore_radius) *
                    p.tread_width;
           case MaterialIds::rail:
             {
@@ -782,8 +773,8 @@ namespace WheelRail
 
 
     void
-    build(const GeometryParameters &                 p,
-          const std::string &                        geometry_type,
+    build(const GeometryParameters                  &p,
+          const std::string                         &geometry_type,
           parallel::distributed::Triangulation<dim> &triangulation)
     {
       std::vector<Point<dim>>    vertices;
@@ -800,8 +791,7 @@ namespace WheelRail
       Triangulation<dim> coarse;
       coarse.create_triangulation(vertices, cells, SubCellData());
       for (const auto &cell : coarse.active_cell_iterators())
-        AssertThrow(cell->measure() > 0,
-                    ExcMessage("Internal error: inverted coarse cell."));
+        AssertThrow(cell->measure() > 0, ExcMessage("Internal error: inverted coarse cell."));
       set_boundary_ids(p, coarse);
       for (const auto &cell : coarse.active_cell_iterators())
         if (cell->material_id() == MaterialIds::wheel)
@@ -824,7 +814,7 @@ namespace WheelRail
       // before the second pass existed), then the same with the cells that
       // reach into the zone or the path at their size; with a steeper
       // grading the first pass leaves such cells coarser.
-      const double coarse_size = effective_coarse_size(p);
+      const double   coarse_size = effective_coarse_size(p);
       const MPI_Comm comm        = triangulation.get_communicator();
       const double   memory      = physical_memory(comm);
       for (const bool whole_zone : {false, true})
@@ -858,11 +848,11 @@ namespace WheelRail
               break;
             estimate = Utilities::MPI::sum(estimate, comm);
             const std::string cause =
-              "Geometry/Mesh/Minimum cell size = " + fmt(p.h_min) + " m with Grading = " +
-              fmt(p.grading) + " would refine the wheel and rail into about " +
-              fmt(estimate, 2) + " cells (estimated from the target sizes before cycle " +
-              std::to_string(cycle) + "), needing at least " +
-              fmt(estimate * bytes_per_cell * 1e-9, 3) + " GB at " +
+              "Geometry/Mesh/Minimum cell size = " + fmt(p.h_min) +
+              " m with Grading = " + fmt(p.grading) +
+              " would refine the wheel and rail into about " + fmt(estimate, 2) +
+              " cells (estimated from the target sizes before cycle " + std::to_string(cycle) +
+              "), needing at least " + fmt(estimate * bytes_per_cell * 1e-9, 3) + " GB at " +
               fmt(bytes_per_cell * 1e-3, 2) + " kB per cell (an explicit run's least)";
             const std::string remedy =
               ": increase Minimum cell size or Grading, or reduce the solution zone "
@@ -872,7 +862,8 @@ namespace WheelRail
             AssertThrow(estimate <= ranks * std::numeric_limits<unsigned int>::max(),
                         ExcMessage(cause + ", " + fmt(estimate / ranks, 2) +
                                    " cells per rank, more than deal.II numbers on one rank "
-                                   "(2^32 - 1)" + remedy));
+                                   "(2^32 - 1)" +
+                                   remedy));
             AssertThrow(estimate * bytes_per_cell <= memory,
                         ExcMessage(cause + ", more than the " + fmt(memory * 1e-9, 3) +
                                    " GB of physical memory of the machine(s)" + remedy));

@@ -37,19 +37,20 @@ main(int argc, char **argv)
 {
   using namespace dealii;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm     comm  = MPI_COMM_WORLD;
-  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
+  const MPI_Comm                   comm  = MPI_COMM_WORLD;
+  const unsigned int               rank  = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int               ranks = Utilities::MPI::n_mpi_processes(comm);
 
   const std::string input = argc > 1 ? argv[1] : "";
   // errors meet on a communicator of their own, so that a rank that failed
   // alone cannot be matched with a collective the others are waiting in
   MPI_Comm error_comm;
   MPI_Comm_dup(comm, &error_comm);
-  const std::unique_ptr<MPI_Comm, void (*)(MPI_Comm *)> free_error_comm(&error_comm, [](MPI_Comm *c) {
-    MPI_Comm_free(c);
-  });
-  const auto fail = [&](std::string message) {
+  const std::unique_ptr<MPI_Comm, void (*)(MPI_Comm *)> free_error_comm(&error_comm,
+                                                                        [](MPI_Comm *c) {
+                                                                          MPI_Comm_free(c);
+                                                                        });
+  const auto                                            fail = [&](std::string message) {
     // name the input file as the user knows it, without its directory
     const std::string name = std::filesystem::path(input).filename().string();
     // (searched from behind each replacement: a bare name in the working
@@ -71,7 +72,7 @@ main(int argc, char **argv)
     MPI_Request request;
     MPI_Ibarrier(error_comm, &request);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-    int        all      = 0;
+    int        all = 0;
     while (!all && std::chrono::steady_clock::now() < deadline)
       {
         MPI_Test(&request, &all, MPI_STATUS_IGNORE);
@@ -86,8 +87,7 @@ main(int argc, char **argv)
     const std::vector<std::string> messages = Utilities::MPI::gather(error_comm, message, 0);
     if (rank == 0)
       for (unsigned int r = 0; r < messages.size(); ++r)
-        if (std::find(messages.begin(), messages.begin() + r, messages[r]) ==
-            messages.begin() + r)
+        if (std::find(messages.begin(), messages.begin() + r, messages[r]) == messages.begin() + r)
           std::cerr << (r > 0 ? "[rank " + std::to_string(r) + "] " : std::string())
                     << "Error: " << messages[r] << std::endl;
     return 1;
@@ -95,8 +95,8 @@ main(int argc, char **argv)
 
   try
     {
-      ParameterHandler       prm;
-      WheelRail::Parameters  parameters;
+      ParameterHandler      prm;
+      WheelRail::Parameters parameters;
       WheelRail::Parameters::declare_parameters(prm);
 
       const std::string arg = argc > 1 ? argv[1] : "";
@@ -129,7 +129,7 @@ main(int argc, char **argv)
       e.print_info(info);
       std::string text = info.str();
       // print_info indents every line; keep the message compact
-      std::string compact;
+      std::string        compact;
       std::istringstream lines(text);
       for (std::string line; std::getline(lines, line);)
         {

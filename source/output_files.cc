@@ -11,8 +11,8 @@
 #include <cstring>
 #include <ctime>
 #include <filesystem>
-#include <functional>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -41,15 +41,14 @@ namespace WheelRail
         if (error != EWOULDBLOCK)
           {
             why_unlocked = "cannot lock '" + name + "' (" + std::strerror(error) +
-                           "): nothing keeps a second run out of " + entry + " '" + directory +
-                           "'";
+                           "): nothing keeps a second run out of " + entry + " '" + directory + "'";
             return;
           }
         // the holder wrote who it is; read it without changing the file
         char          text[256] = {};
         const ssize_t n         = ::pread(fd, text, sizeof(text) - 1, 0);
         ::close(fd);
-        fd = -1;
+        fd                 = -1;
         std::string holder = n > 0 ? std::string(text, n) : std::string();
         while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' '))
           holder.pop_back();
@@ -64,8 +63,8 @@ namespace WheelRail
     const std::time_t now = std::time(nullptr);
     char              when[64];
     std::strftime(when, sizeof(when), "%Y-%m-%d %H:%M:%S UTC", std::gmtime(&now));
-    const std::string text = "pid " + std::to_string(::getpid()) + " on host " + host +
-                             ", started " + when + "\n";
+    const std::string text =
+      "pid " + std::to_string(::getpid()) + " on host " + host + ", started " + when + "\n";
     if (::ftruncate(fd, 0) != 0 ||
         ::pwrite(fd, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size()))
       {
@@ -89,9 +88,9 @@ namespace WheelRail
     const int any = Utilities::MPI::max(error.empty() ? 0 : 1, comm);
     if (any == 0)
       return;
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-    const unsigned int first = Utilities::MPI::min(
-      error.empty() ? Utilities::MPI::n_mpi_processes(comm) : rank, comm);
+    const unsigned int rank = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int first =
+      Utilities::MPI::min(error.empty() ? Utilities::MPI::n_mpi_processes(comm) : rank, comm);
     const std::string message = Utilities::MPI::broadcast(comm, error, first);
     AssertThrow(false, ExcMessage(message));
   }
@@ -106,7 +105,8 @@ namespace WheelRail
       std::ofstream out(tmp);
       out << content;
       out.flush();
-      AssertThrow(out.good(), ExcMessage("Cannot write '" + tmp + "' (disk full or no permission)."));
+      AssertThrow(out.good(),
+                  ExcMessage("Cannot write '" + tmp + "' (disk full or no permission)."));
     }
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
@@ -117,8 +117,8 @@ namespace WheelRail
 
   std::string
   write_vtu_with_pvtu_record(const DataOutInterface<3, 3> &data_out,
-                             const std::string &           directory,
-                             const std::string &           base,
+                             const std::string            &directory,
+                             const std::string            &base,
                              const unsigned int            counter,
                              const unsigned int            n_digits,
                              const MPI_Comm                comm)
@@ -151,27 +151,25 @@ namespace WheelRail
       return "";
     };
 
-    throw_first_error(error_of([&]() {
-                        // straight into the file: a piece can be large
-                        const std::string path = directory + piece(rank);
-                        const std::string tmp  = path + ".tmp";
-                        {
-                          std::ofstream out(tmp, std::ios::binary);
-                          AssertThrow(out.good(),
-                                      ExcMessage("Cannot write '" + tmp + "' (no permission?)."));
-                          data_out.write_vtu(out);
-                          out.flush();
-                          AssertThrow(out.good(),
-                                      ExcMessage("Cannot write '" + tmp +
-                                                 "' (disk full or no permission)."));
-                        }
-                        std::error_code ec;
-                        std::filesystem::rename(tmp, path, ec);
-                        AssertThrow(!ec,
-                                    ExcMessage("Cannot rename '" + tmp + "' to '" + path +
-                                               "': " + ec.message()));
-                      }),
-                      comm);
+    throw_first_error(
+      error_of([&]() {
+        // straight into the file: a piece can be large
+        const std::string path = directory + piece(rank);
+        const std::string tmp  = path + ".tmp";
+        {
+          std::ofstream out(tmp, std::ios::binary);
+          AssertThrow(out.good(), ExcMessage("Cannot write '" + tmp + "' (no permission?)."));
+          data_out.write_vtu(out);
+          out.flush();
+          AssertThrow(out.good(),
+                      ExcMessage("Cannot write '" + tmp + "' (disk full or no permission)."));
+        }
+        std::error_code ec;
+        std::filesystem::rename(tmp, path, ec);
+        AssertThrow(!ec,
+                    ExcMessage("Cannot rename '" + tmp + "' to '" + path + "': " + ec.message()));
+      }),
+      comm);
 
     // every piece is in place: the record that lists them
     throw_first_error(error_of([&]() {

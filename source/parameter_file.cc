@@ -60,12 +60,12 @@ namespace WheelRail
     {
       std::vector<std::string> chain;
       read(filename, chain, 0);
-      bool sets_something = false;
+      bool               sets_something = false;
       std::istringstream lines(expanded);
       for (std::string line; std::getline(lines, line) && !sets_something;)
         {
           const std::string s = statement(line);
-          sets_something = s.compare(0, 4, "set ") == 0 || s.compare(0, 4, "SET ") == 0;
+          sets_something      = s.compare(0, 4, "set ") == 0 || s.compare(0, 4, "SET ") == 0;
         }
       AssertThrow(sets_something,
                   ExcMessage("The parameter file '" + filename +
@@ -77,14 +77,14 @@ namespace WheelRail
 
 
     void
-    ExpandedText::read(const std::string &       filename,
+    ExpandedText::read(const std::string        &filename,
                        std::vector<std::string> &chain,
                        const unsigned int        depth)
     {
-      const std::string who = chain.empty() ? "The parameter file '" + filename + "'" :
-                                              "The included file '" + filename + "'";
-      std::error_code               ec;
-      const std::filesystem::path   path(filename);
+      const std::string           who = chain.empty() ? "The parameter file '" + filename + "'" :
+                                                        "The included file '" + filename + "'";
+      std::error_code             ec;
+      const std::filesystem::path path(filename);
       const std::filesystem::file_status status = std::filesystem::status(path, ec);
       AssertThrow(std::filesystem::exists(status),
                   ExcMessage(who + " does not exist" +
@@ -117,11 +117,11 @@ namespace WheelRail
                       ExcMessage(where(filename, number) +
                                  "a NUL byte: this is not a text parameter file."));
 
-          const std::string s        = statement(line);
-          const bool        is_cont  = continued;
-          const std::string trimmed  = Utilities::trim(line);
-          continued                  = !trimmed.empty() && trimmed.back() == '\\';
-          const std::string target   = is_cont ? std::string() : include_target(s);
+          const std::string s       = statement(line);
+          const bool        is_cont = continued;
+          const std::string trimmed = Utilities::trim(line);
+          continued                 = !trimmed.empty() && trimmed.back() == '\\';
+          const std::string target  = is_cont ? std::string() : include_target(s);
           if (target.empty())
             {
               if (!is_cont)
@@ -208,14 +208,15 @@ namespace WheelRail
           unsigned int n = 0;
           try
             {
-              n = Utilities::string_to_int(message.substr(hit + key.size(), number_end - hit - key.size()));
+              n = Utilities::string_to_int(
+                message.substr(hit + key.size(), number_end - hit - key.size()));
             }
           catch (...)
             {}
           result += message.substr(pos, hit - pos);
           if (n >= 1 && n <= origin.size())
-            result += "Line <" + std::to_string(origin[n - 1].second) + "> of file <" +
-                      origin[n - 1].first;
+            result +=
+              "Line <" + std::to_string(origin[n - 1].second) + "> of file <" + origin[n - 1].first;
           else
             result += message.substr(hit, number_end + file_key.size() - hit);
           pos = number_end + file_key.size();

@@ -25,8 +25,8 @@ namespace WheelRail
     Tensor<1, 3>
     get_vector(const ParameterHandler &prm, const std::string &name)
     {
-      const auto values = Utilities::string_to_double(
-        Utilities::split_string_list(prm.get(name), ','));
+      const auto values =
+        Utilities::string_to_double(Utilities::split_string_list(prm.get(name), ','));
       Tensor<1, 3> t;
       for (unsigned int d = 0; d < 3; ++d)
         t[d] = values[d];
@@ -48,20 +48,20 @@ namespace WheelRail
                       "(subsection Geometry/Bar) and 'block on plate' a block "
                       "resting on a plate (Geometry/Block on plate), both for "
                       "verification.");
-    prm.declare_entry(
-      "Mode",
-      "explicit dynamics",
-      Patterns::Selection("explicit dynamics|static contact|patch test|rigid rotation"),
-      "'explicit dynamics': central-difference time integration. "
-      "'static contact': the implicit equilibrium of the wheel pressed "
-      "onto the rail with Static solve/Axle load, compared with Hertz. "
-      "'patch test': impose the linear displacement u = G X "
-      "(Verification/Displacement gradient) on every node and compare the "
-      "element stresses with the exact St. Venant-Kirchhoff stress and the "
-      "interior nodal forces with zero. 'rigid rotation': impose "
-      "u = (R - I)(X - c) on the wheel (or the bar), R a rotation by "
-      "Verification/Rotation angle, and report stress and internal force "
-      "(exactly zero for an objective element).");
+    prm.declare_entry("Mode",
+                      "explicit dynamics",
+                      Patterns::Selection(
+                        "explicit dynamics|static contact|patch test|rigid rotation"),
+                      "'explicit dynamics': central-difference time integration. "
+                      "'static contact': the implicit equilibrium of the wheel pressed "
+                      "onto the rail with Static solve/Axle load, compared with Hertz. "
+                      "'patch test': impose the linear displacement u = G X "
+                      "(Verification/Displacement gradient) on every node and compare the "
+                      "element stresses with the exact St. Venant-Kirchhoff stress and the "
+                      "interior nodal forces with zero. 'rigid rotation': impose "
+                      "u = (R - I)(X - c) on the wheel (or the bar), R a rotation by "
+                      "Verification/Rotation angle, and report stress and internal force "
+                      "(exactly zero for an objective element).");
     prm.declare_entry("Output directory",
                       "results",
                       Patterns::DirectoryName(),
@@ -338,8 +338,8 @@ namespace WheelRail
       bar_width  = prm.get_double("Width");
       bar_height = prm.get_double("Height");
       bar_cells.clear();
-      for (const int n : Utilities::string_to_int(
-             Utilities::split_string_list(prm.get("Cells"), ',')))
+      for (const int n :
+           Utilities::string_to_int(Utilities::split_string_list(prm.get("Cells"), ',')))
         bar_cells.push_back(n);
       bar_distortion = prm.get_double("Distortion");
       prm.leave_subsection();
@@ -347,7 +347,8 @@ namespace WheelRail
       prm.enter_subsection("Block on plate");
       const auto cells = [&](const std::string &name) {
         std::vector<unsigned int> n;
-        for (const int i : Utilities::string_to_int(Utilities::split_string_list(prm.get(name), ',')))
+        for (const int i :
+             Utilities::string_to_int(Utilities::split_string_list(prm.get(name), ',')))
           n.push_back(i);
         return n;
       };
@@ -359,7 +360,8 @@ namespace WheelRail
       block_gap   = prm.get_double("Block gap");
       for (unsigned int d = 0; d < 3; ++d)
         AssertThrow(plate_size[d] > 0 && block_size[d] > 0,
-                    ExcMessage("Geometry/Block on plate: Plate size and Block size must be positive."));
+                    ExcMessage(
+                      "Geometry/Block on plate: Plate size and Block size must be positive."));
       prm.leave_subsection();
     }
     prm.leave_subsection();
@@ -372,11 +374,9 @@ namespace WheelRail
   GeometryParameters::check() const
   {
     AssertThrow(bore_radius < 0.8 * wheel_radius,
-                ExcMessage("Geometry/Wheel/Bore radius (" +
-                           std::to_string(bore_radius) +
+                ExcMessage("Geometry/Wheel/Bore radius (" + std::to_string(bore_radius) +
                            " m) must be below 0.8 x Geometry/Wheel/Radius."));
-    AssertThrow(rail_end_x > rail_start_x,
-                ExcMessage("Geometry/Rail/End x must exceed Start x."));
+    AssertThrow(rail_end_x > rail_start_x, ExcMessage("Geometry/Rail/End x must exceed Start x."));
     AssertThrow(wheel_centre_x > rail_start_x && wheel_centre_x < rail_end_x,
                 ExcMessage("Geometry/Wheel/Centre x must lie between "
                            "Geometry/Rail/Start x and End x."));
@@ -431,10 +431,7 @@ namespace WheelRail
                       "0.3",
                       Patterns::Double(0, 0.49),
                       "nu [-], range [0, 0.49].");
-    prm.declare_entry("Density",
-                      "7800",
-                      Patterns::Double(1, 1e5),
-                      "rho [kg/m^3], range [1, 1e5].");
+    prm.declare_entry("Density", "7800", Patterns::Double(1, 1e5), "rho [kg/m^3], range [1, 1e5].");
     prm.leave_subsection();
   }
 
@@ -525,18 +522,17 @@ namespace WheelRail
   BoundaryParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Boundary conditions");
-    prm.declare_entry(
-      "Fixed boundaries",
-      "11: xyz, 12: x",
-      Patterns::Map(Patterns::Integer(0, 255),
-                    Patterns::Selection("x|y|z|xy|xz|yz|xyz"),
-                    0,
-                    Patterns::Map::max_int_value,
-                    ",",
-                    ":"),
-      "Boundary ids and the displacement components held at zero, e.g. "
-      "'11: xyz, 12: x' (rail bottom fixed, rail ends fixed in x). Boundary "
-      "ids are listed in the README.");
+    prm.declare_entry("Fixed boundaries",
+                      "11: xyz, 12: x",
+                      Patterns::Map(Patterns::Integer(0, 255),
+                                    Patterns::Selection("x|y|z|xy|xz|yz|xyz"),
+                                    0,
+                                    Patterns::Map::max_int_value,
+                                    ",",
+                                    ":"),
+                      "Boundary ids and the displacement components held at zero, e.g. "
+                      "'11: xyz, 12: x' (rail bottom fixed, rail ends fixed in x). Boundary "
+                      "ids are listed in the README.");
     prm.declare_entry("Prescribed velocity boundaries",
                       "",
                       Patterns::List(Patterns::Integer(0, 255)),
@@ -586,15 +582,14 @@ namespace WheelRail
   {
     prm.enter_subsection("Boundary conditions");
     fixed.clear();
-    for (const auto &entry :
-         Utilities::split_string_list(prm.get("Fixed boundaries"), ','))
+    for (const auto &entry : Utilities::split_string_list(prm.get("Fixed boundaries"), ','))
       {
         // An id given twice is rejected rather than merged: a repeated id
         // is more likely a mistyped other id than two halves of one
         // condition, and merging would hide that boundary's missing
         // condition.
-        const auto kv = Utilities::split_string_list(entry, ':');
-        const auto id = static_cast<types::boundary_id>(Utilities::string_to_int(kv[0]));
+        const auto kv       = Utilities::split_string_list(entry, ':');
+        const auto id       = static_cast<types::boundary_id>(Utilities::string_to_int(kv[0]));
         const auto previous = fixed.find(id);
         if (previous != fixed.end())
           {
@@ -611,8 +606,7 @@ namespace WheelRail
           }
         fixed[id] = kv[1];
       }
-    fixed_is_default =
-      fixed == std::map<types::boundary_id, std::string>{{11, "xyz"}, {12, "x"}};
+    fixed_is_default = fixed == std::map<types::boundary_id, std::string>{{11, "xyz"}, {12, "x"}};
     prescribed_velocity_ids.clear();
     for (const int id : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Prescribed velocity boundaries"))))
@@ -742,23 +736,23 @@ namespace WheelRail
   ContactParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    enabled             = prm.get_bool("Enabled");
-    slave_boundary      = prm.get_integer("Slave boundary");
-    master_boundary     = prm.get_integer("Master boundary");
-    two_pass            = prm.get_bool("Two pass");
-    penalty_scale       = prm.get_double("Penalty scale factor");
-    penalty_stiffness   = prm.get("Penalty stiffness");
-    penalty_reference_length = prm.get_double("Penalty reference length");
-    tangential_factor   = prm.get_double("Tangential stiffness factor");
-    damping_ratio       = prm.get_double("Contact damping");
-    search_interval     = prm.get_integer("Search interval");
-    search_margin       = prm.get_double("Search margin");
-    rebuild_fraction    = prm.get_double("Rebuild fraction");
+    enabled                   = prm.get_bool("Enabled");
+    slave_boundary            = prm.get_integer("Slave boundary");
+    master_boundary           = prm.get_integer("Master boundary");
+    two_pass                  = prm.get_bool("Two pass");
+    penalty_scale             = prm.get_double("Penalty scale factor");
+    penalty_stiffness         = prm.get("Penalty stiffness");
+    penalty_reference_length  = prm.get_double("Penalty reference length");
+    tangential_factor         = prm.get_double("Tangential stiffness factor");
+    damping_ratio             = prm.get_double("Contact damping");
+    search_interval           = prm.get_integer("Search interval");
+    search_margin             = prm.get_double("Search margin");
+    rebuild_fraction          = prm.get_double("Rebuild fraction");
     initial_overlap_tolerance = prm.get_double("Initial overlap tolerance");
-    friction_law        = prm.get("Friction law");
-    static_coefficient  = prm.get_double("Static friction coefficient");
-    dynamic_coefficient = prm.get_double("Dynamic friction coefficient");
-    decay               = prm.get_double("Decay coefficient");
+    friction_law              = prm.get("Friction law");
+    static_coefficient        = prm.get_double("Static friction coefficient");
+    dynamic_coefficient       = prm.get_double("Dynamic friction coefficient");
+    decay                     = prm.get_double("Decay coefficient");
     prm.leave_subsection();
     AssertThrow(slave_boundary != master_boundary,
                 ExcMessage("Contact/Slave boundary and Contact/Master boundary must differ."));
@@ -1005,7 +999,8 @@ namespace WheelRail
                       "it with the same rank count. Each rank file records "
                       "every parameter and a CRC-32 checksum: a resumed run "
                       "stops on a damaged file, and on any changed entry but "
-                      "these (which it lists): " + resumable + ".");
+                      "these (which it lists): " +
+                        resumable + ".");
     prm.declare_entry("Checkpoint minutes",
                       "0",
                       Patterns::Double(0, 1e6),
@@ -1144,7 +1139,7 @@ namespace WheelRail
   VerificationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Verification");
-    check = prm.get("Check");
+    check        = prm.get("Check");
     const auto g = Utilities::string_to_double(
       Utilities::split_string_list(prm.get("Displacement gradient"), ','));
     for (unsigned int i = 0; i < 3; ++i)
@@ -1155,10 +1150,10 @@ namespace WheelRail
     AssertThrow(rotation_axis.norm() > 0,
                 ExcMessage("Verification/Rotation axis must not be zero."));
     rotation_axis /= rotation_axis.norm();
-    tolerance       = prm.get_double("Tolerance");
-    wave_threshold  = prm.get_double("Wave threshold");
-    hourglass_limit = prm.get_double("Hourglass limit");
-    bar_clamped     = prm.get_bool("Clamped");
+    tolerance           = prm.get_double("Tolerance");
+    wave_threshold      = prm.get_double("Wave threshold");
+    hourglass_limit     = prm.get_double("Hourglass limit");
+    bar_clamped         = prm.get_bool("Clamped");
     round_off_sensitive = prm.get_bool("Round-off sensitive");
     prm.leave_subsection();
   }
@@ -1178,8 +1173,8 @@ namespace WheelRail
                         const std::string &variables,
                         const std::string &entry)
     {
-      bool identifier = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) ||
-                                          name[0] == '_');
+      bool identifier =
+        !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
       for (const char ch : name)
         identifier = identifier && (std::isalnum(static_cast<unsigned char>(ch)) || ch == '_');
       AssertThrow(identifier,
@@ -1191,11 +1186,13 @@ namespace WheelRail
                     ExcMessage(entry + " constants: '" + name +
                                "' is a variable of the expression (" + variables +
                                ") and cannot be a constant."));
-      static const char *reserved[] = {
-        "_pi",  "_e",    "sin",   "cos",   "tan",  "asin", "acos", "atan", "sinh", "cosh",
-        "tanh", "asinh", "acosh", "atanh", "log2", "log10", "log", "ln",   "exp",  "sqrt",
-        "sign", "rint",  "abs",   "min",   "max",  "sum",  "avg",  "if",   "int",  "ceil",
-        "cot",  "csc",   "floor", "sec",   "pow",  "erfc", "rand", "rand_seed", "atan2", "fmod"};
+      static const char *reserved[] = {"_pi",   "_e",        "sin",   "cos",   "tan",  "asin",
+                                       "acos",  "atan",      "sinh",  "cosh",  "tanh", "asinh",
+                                       "acosh", "atanh",     "log2",  "log10", "log",  "ln",
+                                       "exp",   "sqrt",      "sign",  "rint",  "abs",  "min",
+                                       "max",   "sum",       "avg",   "if",    "int",  "ceil",
+                                       "cot",   "csc",       "floor", "sec",   "pow",  "erfc",
+                                       "rand",  "rand_seed", "atan2", "fmod"};
       for (const char *r : reserved)
         AssertThrow(name != r,
                     ExcMessage(entry + " constants: '" + name +
@@ -1221,8 +1218,9 @@ namespace WheelRail
         check_constant_name(name, variables, entry);
         AssertThrow(constants.count(name) == 0,
                     ExcMessage(entry + " constants: '" + name +
-                               (name == "pi" ? "' is built in (pi = 3.14159...) and cannot be redefined." :
-                                               "' is defined twice.")));
+                               (name == "pi" ?
+                                  "' is built in (pi = 3.14159...) and cannot be redefined." :
+                                  "' is defined twice.")));
         double value = 0;
         try
           {
@@ -1230,8 +1228,7 @@ namespace WheelRail
           }
         catch (...)
           {
-            AssertThrow(false,
-                        ExcMessage(entry + " constants: '" + kv[1] + "' is not a number."));
+            AssertThrow(false, ExcMessage(entry + " constants: '" + kv[1] + "' is not a number."));
           }
         AssertThrow(std::isfinite(value),
                     ExcMessage(entry + " constants: " + name + " = " + kv[1] + " is not finite."));
@@ -1244,7 +1241,10 @@ namespace WheelRail
     auto function = std::make_unique<FunctionParser<3>>(3);
     try
       {
-        function->initialize(variables, components, constants, variables.find('t') != std::string::npos);
+        function->initialize(variables,
+                             components,
+                             constants,
+                             variables.find('t') != std::string::npos);
         for (unsigned int d = 0; d < 3; ++d)
           AssertThrow(std::isfinite(function->value(Point<3>(), d)), ExcMessage("not finite at 0"));
       }

@@ -77,9 +77,7 @@ namespace WheelRail
 
 
 
-  Simulator::Simulator(const Parameters &      parameters,
-                       const ParameterHandler &prm,
-                       MPI_Comm                comm)
+  Simulator::Simulator(const Parameters &parameters, const ParameterHandler &prm, MPI_Comm comm)
     : parameters(parameters)
     , parameter_file(print_parameters(prm, ParameterHandler::PRM))
     , parameter_record(print_parameters(prm, ParameterHandler::ShortPRM))
@@ -121,7 +119,7 @@ namespace WheelRail
     AssertThrow(!parameters.output.resume || std::filesystem::is_directory(output_directory),
                 ExcMessage("--resume: Problem/Output directory '" + output_directory +
                            "' does not exist: no checkpoint to resume from."));
-    int ok = 1;
+    int         ok = 1;
     std::string message;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
@@ -173,7 +171,9 @@ namespace WheelRail
     solver->setup();
     if (parameters.contact.enabled && parameters.problem.geometry != "bar")
       {
-        contact = std::make_unique<PenaltyContact>(parameters.contact, parameters.material, mpi_communicator);
+        contact = std::make_unique<PenaltyContact>(parameters.contact,
+                                                   parameters.material,
+                                                   mpi_communicator);
         contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->lumped_mass());
         solver->attach_contact(contact.get());
       }
@@ -224,9 +224,11 @@ namespace WheelRail
     const MeshQuality &q = solver->mesh_quality();
     const double       c = parameters.material.wave_speed();
     pcout << "Mesh" << std::endl
-          << "  cells                        : " << triangulation.n_global_active_cells() << std::endl
+          << "  cells                        : " << triangulation.n_global_active_cells()
+          << std::endl
           << "  DoFs                         : " << solver->get_dof_handler().n_dofs() << std::endl
-          << "  h_min (smallest cell size)   : " << fmt(q.min_longest_edge * 1e3) << " mm" << std::endl
+          << "  h_min (smallest cell size)   : " << fmt(q.min_longest_edge * 1e3) << " mm"
+          << std::endl
           << "  shortest edge                : " << fmt(q.min_edge * 1e3) << " mm" << std::endl
           << "  smallest L_e = V/A_max       : " << fmt(q.min_length * 1e3) << " mm" << std::endl
           << "  smallest scaled Jacobian     : " << fmt(q.min_scaled_jacobian, 4) << std::endl
@@ -235,13 +237,14 @@ namespace WheelRail
       for (const auto &[id, name] : {std::pair{Geometry::MaterialIds::wheel, "wheel"},
                                      std::pair{Geometry::MaterialIds::rail, "rail "}})
         {
-          const Geometry::ZoneCells z = Geometry::zone_cells(parameters.geometry, id, triangulation);
+          const Geometry::ZoneCells z =
+            Geometry::zone_cells(parameters.geometry, id, triangulation);
           pcout << "  solution zone, " << name << "        : ";
           if (z.n_cells == 0)
             pcout << "none" << std::endl;
           else
-            pcout << z.n_cells << " cells, longest edge " << fmt(z.max_longest_edge * 1e3)
-                  << " mm" << std::endl;
+            pcout << z.n_cells << " cells, longest edge " << fmt(z.max_longest_edge * 1e3) << " mm"
+                  << std::endl;
         }
 
     pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
@@ -256,19 +259,17 @@ namespace WheelRail
         const double m      = solver->total_mass(body.first);
         const double m_mesh = rho * solver->mesh_volume(body.first);
         const double m_true = rho * Geometry::exact_volume(parameters.geometry, body.first);
-        pcout << "  " << std::left << std::setw(6) << body.second << std::right
-              << " lumped mass " << fmt(m, 8) << " kg, rho x mesh volume "
-              << fmt(m_mesh, 8) << " kg (rel. error " << fmt(std::abs(m - m_mesh) / m_mesh, 1)
-              << "), rho x exact volume " << fmt(m_true, 8) << " kg (rel. error "
-              << fmt(std::abs(m - m_true) / m_true, 3) << ")" << std::endl;
+        pcout << "  " << std::left << std::setw(6) << body.second << std::right << " lumped mass "
+              << fmt(m, 8) << " kg, rho x mesh volume " << fmt(m_mesh, 8) << " kg (rel. error "
+              << fmt(std::abs(m - m_mesh) / m_mesh, 1) << "), rho x exact volume " << fmt(m_true, 8)
+              << " kg (rel. error " << fmt(std::abs(m - m_true) / m_true, 3) << ")" << std::endl;
       }
 
     const double dt = solver->time_step();
     pcout << "Time integration" << std::endl
           << "  dilatational wave speed c    : " << fmt(c) << " m/s" << std::endl
-          << "  stable step (Courant "
-          << fmt(parameters.solver.courant_factor, 3) << ")     : " << fmt(solver->stable_time_step() * 1e6)
-          << " us" << std::endl
+          << "  stable step (Courant " << fmt(parameters.solver.courant_factor, 3)
+          << ")     : " << fmt(solver->stable_time_step() * 1e6) << " us" << std::endl
           << "  step used                    : " << fmt(dt * 1e6) << " us" << std::endl
           << "  Courant number c dt / L_e    : " << fmt(c * dt / q.min_length, 4) << std::endl
           << "  hourglass coefficient QM     : " << fmt(parameters.solver.hourglass_coefficient)
@@ -290,13 +291,13 @@ namespace WheelRail
         if (cp.penalty_stiffness == "area")
           pcout << "  penalty stiffness          : k = SF K A / h_ref, h_ref = "
                 << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
-        pcout
-              << "  friction law               : " << cp.friction_law;
+        pcout << "  friction law               : " << cp.friction_law;
         if (cp.friction_law == "constant")
           pcout << " (f = " << fmt(cp.static_coefficient) << ")";
         else if (cp.friction_law == "exponential")
-          pcout << " (f_S = " << fmt(cp.static_coefficient) << ", f_D = "
-                << fmt(cp.dynamic_coefficient) << ", k = " << fmt(cp.decay) << " s/m)";
+          pcout << " (f_S = " << fmt(cp.static_coefficient)
+                << ", f_D = " << fmt(cp.dynamic_coefficient) << ", k = " << fmt(cp.decay)
+                << " s/m)";
         pcout << std::endl;
       }
     if (parameters.problem.mode == "explicit dynamics")
@@ -310,7 +311,7 @@ namespace WheelRail
   void
   Simulator::run_static_check()
   {
-    const VerificationParameters &vp = parameters.verification;
+    const VerificationParameters &vp  = parameters.verification;
     const bool                    bar = parameters.problem.geometry == "bar";
     const double                  E   = parameters.material.youngs_modulus;
     VectorType                    force;
@@ -320,11 +321,11 @@ namespace WheelRail
         const Tensor<2, dim> G = vp.displacement_gradient;
         solver->set_displacement([&](const Point<dim> &X) { return G * X; });
         solver->compute_internal_force(force);
-        const Tensor<2, dim> F   = unit_symmetric_tensor<dim>() + G;
-        const Tensor<2, dim> Ex  = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
-        const Tensor<2, dim> Sx  = parameters.material.lambda() * trace(Ex) *
-                                    Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
-                                  2. * parameters.material.mu() * Ex;
+        const Tensor<2, dim> F  = unit_symmetric_tensor<dim>() + G;
+        const Tensor<2, dim> Ex = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
+        const Tensor<2, dim> Sx =
+          parameters.material.lambda() * trace(Ex) * Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
+          2. * parameters.material.mu() * Ex;
         double     max_stress_error = 0;
         const auto stresses         = solver->cell_stresses();
         for (const auto &cell : triangulation.active_cell_iterators())
@@ -334,14 +335,14 @@ namespace WheelRail
               max_stress_error =
                 std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
             }
-        max_stress_error = Utilities::MPI::max(max_stress_error, mpi_communicator);
+        max_stress_error    = Utilities::MPI::max(max_stress_error, mpi_communicator);
         double max_interior = 0, max_boundary = 0;
         for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
           (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
             std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
                      std::abs(force.local_element(i)));
-        max_interior = Utilities::MPI::max(max_interior, mpi_communicator);
-        max_boundary = Utilities::MPI::max(max_boundary, mpi_communicator);
+        max_interior     = Utilities::MPI::max(max_interior, mpi_communicator);
+        max_boundary     = Utilities::MPI::max(max_boundary, mpi_communicator);
         const double tol = 1e-10;
         pcout << "Patch test: u = G X on every node" << std::endl
               << "  exact 2nd Piola-Kirchhoff stress |S| : " << fmt(Sx.norm() * 1e-6) << " MPa"
@@ -360,10 +361,9 @@ namespace WheelRail
       }
 
     // rigid rotation of the wheel (or the bar) about its centre
-    const Point<dim> centre =
-      bar ? Point<dim>(0.5 * parameters.geometry.bar_length, 0, 0) :
-            Geometry::wheel_centre(parameters.geometry);
-    const Tensor<2, dim> R = rotation_matrix(vp.rotation_axis, vp.rotation_angle);
+    const Point<dim>     centre = bar ? Point<dim>(0.5 * parameters.geometry.bar_length, 0, 0) :
+                                        Geometry::wheel_centre(parameters.geometry);
+    const Tensor<2, dim> R      = rotation_matrix(vp.rotation_axis, vp.rotation_angle);
     solver->set_displacement(
       [&](const Point<dim> &X) {
         const Tensor<1, dim> r = X - centre;
@@ -371,7 +371,7 @@ namespace WheelRail
       },
       bar ? Geometry::MaterialIds::bar : Geometry::MaterialIds::wheel);
     solver->compute_internal_force(force);
-    double max_vm = 0;
+    double     max_vm   = 0;
     const auto stresses = solver->cell_stresses();
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -402,13 +402,12 @@ namespace WheelRail
     double      max_ft = 0;
     for (const auto &s : states)
       max_ft = std::max(max_ft, s.tangential_force.norm());
-    const double eps_t = 0.003 * max_ft; // SPEC 6, eq. 5
-    const double eps_s = 0.05;           // m/s, eq. 6
+    const double       eps_t = 0.003 * max_ft; // SPEC 6, eq. 5
+    const double       eps_s = 0.05;           // m/s, eq. 6
     std::ostringstream out;
-    out << std::setprecision(9)
-        << "# slave-node contact state at t = " << solver->time()
-        << " s; SI units; x, y, z current position; adhesion by eq. 5 (f|F_n| - |F_t| > "
-        << eps_t << " N), slip by eq. 6 (s_n > " << eps_s << " m/s)\n"
+    out << std::setprecision(9) << "# slave-node contact state at t = " << solver->time()
+        << " s; SI units; x, y, z current position; adhesion by eq. 5 (f|F_n| - |F_t| > " << eps_t
+        << " N), slip by eq. 6 (s_n > " << eps_s << " m/s)\n"
         << "X,Y,Z,x,y,z,in_contact,gap,F_n,F_t_x,F_t_y,F_t_z,area,pressure,shear_x,shear,"
            "slip_velocity,cof,adhesion_eq5,slip_eq6\n";
     for (const auto &s : states)
@@ -447,14 +446,15 @@ namespace WheelRail
           << "contact force " << fmt(r.contact_force * 1e-3, 5) << " kN after " << r.load_iterations
           << " load iterations, " << r.newton_iterations << " Newton iterations";
     if (!parameters.problem.test_mode)
-      pcout << ", " << r.linear_iterations << " CG iterations, " << fmt(timer.wall_time(), 3) << " s";
+      pcout << ", " << r.linear_iterations << " CG iterations, " << fmt(timer.wall_time(), 3)
+            << " s";
     pcout << std::endl;
 
     // contact patch: least-squares fit p^2 = p0^2 (1 - (x-xc)^2/a^2 - y^2/b^2)
     // over the nodes with p > 25 % of the largest (the edge nodes' tributary
     // areas reach beyond the patch)
-    const auto &states = contact->slave_states();
-    double      p_max = 0, force = 0, xc = 0, max_pen = 0;
+    const auto  &states = contact->slave_states();
+    double       p_max = 0, force = 0, xc = 0, max_pen = 0;
     unsigned int n_contact = 0;
     for (const auto &s : states)
       if (s.in_contact)
@@ -491,17 +491,19 @@ namespace WheelRail
     M.vmult(c, rhs);
     const double p0 = std::sqrt(c(0)), a = std::sqrt(-c(0) / c(1)), b = std::sqrt(-c(0) / c(2));
 
-    const GeometryParameters &g  = parameters.geometry;
-    const double E_star = parameters.material.youngs_modulus /
-                          (2 * (1 - parameters.material.poisson_ratio * parameters.material.poisson_ratio));
-    const HertzSolution h = hertz_contact(0.5 / g.wheel_radius,
-                                          0.5 / g.rail_profile_radius,
-                                          r.contact_force,
-                                          E_star);
-    const double tol = parameters.verification.tolerance;
-    const auto line = [&](const std::string &what, const double fe, const double ref,
-                          const double scale, const std::string &unit) {
-      const double err = std::abs(fe - ref) / ref;
+    const GeometryParameters &g = parameters.geometry;
+    const double              E_star =
+      parameters.material.youngs_modulus /
+      (2 * (1 - parameters.material.poisson_ratio * parameters.material.poisson_ratio));
+    const HertzSolution h =
+      hertz_contact(0.5 / g.wheel_radius, 0.5 / g.rail_profile_radius, r.contact_force, E_star);
+    const double tol  = parameters.verification.tolerance;
+    const auto   line = [&](const std::string &what,
+                          const double       fe,
+                          const double       ref,
+                          const double       scale,
+                          const std::string &unit) {
+      const double       err = std::abs(fe - ref) / ref;
       std::ostringstream error;
       error << std::fixed << std::setprecision(3) << err;
       pcout << "  " << std::left << std::setw(34) << what << std::right << std::setw(10)
@@ -509,7 +511,8 @@ namespace WheelRail
             << "   error " << error.str() << (err <= tol ? "  ok" : "  OUT OF TOLERANCE")
             << std::endl;
     };
-    pcout << "Contact patch against Hertz (E* = " << fmt(E_star * 1e-9, 5) << " GPa, A = 1/(2 R_w), "
+    pcout << "Contact patch against Hertz (E* = " << fmt(E_star * 1e-9, 5)
+          << " GPa, A = 1/(2 R_w), "
           << "B = 1/(2 R_rail))" << std::endl
           << "  nodes in contact " << n_contact << ", total normal force " << fmt(force * 1e-3, 5)
           << " kN, largest nodal pressure " << fmt(p_max * 1e-6, 4) << " MPa" << std::endl
@@ -547,8 +550,7 @@ namespace WheelRail
     double           radius = parameters.geometry.wheel_radius + parameters.geometry.initial_gap;
     if (parameters.wheelset.static_start)
       {
-        AssertThrow(contact,
-                    ExcMessage("Wheelset/Static start needs Contact/Enabled = true."));
+        AssertThrow(contact, ExcMessage("Wheelset/Static start needs Contact/Enabled = true."));
         Timer timer;
         // the wheel of the rolling run spins: include its centrifugal load
         const double omega = parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
@@ -632,14 +634,15 @@ namespace WheelRail
     const double centre = patch_centre();
     if (std::isnan(centre) || next_snapshot >= 3)
       return;
-    const double dts    = 5.7e-6; // s, the paper's 175 kHz sampling
-    const double target = (static_cast<double>(next_snapshot) - 1.) * parameters.wheelset.rolling_speed * dts;
+    const double dts = 5.7e-6; // s, the paper's 175 kHz sampling
+    const double target =
+      (static_cast<double>(next_snapshot) - 1.) * parameters.wheelset.rolling_speed * dts;
     if (!(previous_patch_centre < target && centre >= target))
       {
         previous_patch_centre = centre;
         return;
       }
-    previous_patch_centre = centre;
+    previous_patch_centre  = centre;
     const std::string name = next_snapshot == 0 ? "t-5.7us" : next_snapshot == 1 ? "t" : "t+5.7us";
     ++next_snapshot;
 
@@ -649,12 +652,12 @@ namespace WheelRail
     double                    max_ft = 0;
     for (const auto &m : states)
       max_ft = std::max(max_ft, m.tangential_force.norm());
-    const double eps_t = 0.003 * max_ft, eps_s = 0.05;
+    const double       eps_t = 0.003 * max_ft, eps_s = 0.05;
     std::ostringstream csv, vtu_points, vtu_data[6];
     csv << std::setprecision(9) << "# contact patch at " << name << " (t = " << solver->time()
         << " s, patch centre x = " << centre << " m): rail-top nodes of the solution zone; SI "
-        << "units; adhesion eq. 5 (f|F_n| - |F_t| > " << eps_t << " N), slip eq. 6 (s_n > "
-        << eps_s << " m/s)\n"
+        << "units; adhesion eq. 5 (f|F_n| - |F_t| > " << eps_t << " N), slip eq. 6 (s_n > " << eps_s
+        << " m/s)\n"
         << "x,y,in_contact,pressure,shear_x,shear,slip_velocity,cof,adhesion_eq5,slip_eq6,"
            "F_n,area\n";
     unsigned int n_points = 0, n_contact = 0, n_slip = 0;
@@ -664,17 +667,21 @@ namespace WheelRail
         if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
             std::abs(m.X[1]) > g.zone_half_width + 1e-9 || m.area <= 0)
           continue;
-        const bool   in      = m.normal_force > 0;
-        const double p       = m.normal_force / m.area;
-        const double shear   = m.tangential_force.norm() / m.area;
-        const bool   adhere  = in && m.cof * m.normal_force - m.tangential_force.norm() > eps_t;
-        const bool   slip    = in && m.slip_velocity > eps_s;
+        const bool   in     = m.normal_force > 0;
+        const double p      = m.normal_force / m.area;
+        const double shear  = m.tangential_force.norm() / m.area;
+        const bool   adhere = in && m.cof * m.normal_force - m.tangential_force.norm() > eps_t;
+        const bool   slip   = in && m.slip_velocity > eps_s;
         csv << m.X[0] << ',' << m.X[1] << ',' << in << ',' << p << ','
             << m.tangential_force[0] / m.area << ',' << shear << ',' << m.slip_velocity << ','
             << m.cof << ',' << adhere << ',' << slip << ',' << m.normal_force << ',' << m.area
             << '\n';
         vtu_points << m.X[0] << ' ' << m.X[1] << ' ' << m.X[2] << '\n';
-        const double values[6] = {p, m.tangential_force[0] / m.area, shear, m.slip_velocity, m.cof,
+        const double values[6] = {p,
+                                  m.tangential_force[0] / m.area,
+                                  shear,
+                                  m.slip_velocity,
+                                  m.cof,
                                   double(in) + double(in && !adhere)};
         for (unsigned int k = 0; k < 6; ++k)
           vtu_data[k] << values[k] << '\n';
@@ -711,7 +718,11 @@ namespace WheelRail
     for (unsigned int i = 0; i < n_points; ++i)
       vtu << "1\n";
     vtu << "</DataArray>\n</Cells>\n<PointData>\n";
-    const char *names[6] = {"pressure_Pa", "shear_x_Pa", "shear_Pa", "slip_velocity_m_s", "cof",
+    const char *names[6] = {"pressure_Pa",
+                            "shear_x_Pa",
+                            "shear_Pa",
+                            "slip_velocity_m_s",
+                            "cof",
                             "state_0free_1adhesion_2slip"};
     for (unsigned int k = 0; k < 6; ++k)
       vtu << "<DataArray type=\"Float64\" Name=\"" << names[k] << "\" format=\"ascii\">\n"
@@ -722,11 +733,11 @@ namespace WheelRail
     if (robust_output_only())
       return;
     pcout << "Contact patch at " << name << " (t = " << fmt(solver->time() * 1e3, 6)
-          << " ms): " << n_contact << " rail-top nodes in contact, x from "
-          << fmt(x_min * 1e3, 4) << " to " << fmt(x_max * 1e3, 4) << " mm, y from "
-          << fmt(y_min * 1e3, 4) << " to " << fmt(y_max * 1e3, 4) << " mm, peak pressure "
-          << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
-          << " MPa, slip (eq. 5) " << n_slip << " of " << n_contact << " nodes" << std::endl;
+          << " ms): " << n_contact << " rail-top nodes in contact, x from " << fmt(x_min * 1e3, 4)
+          << " to " << fmt(x_max * 1e3, 4) << " mm, y from " << fmt(y_min * 1e3, 4) << " to "
+          << fmt(y_max * 1e3, 4) << " mm, peak pressure " << fmt(p_max * 1e-6, 5)
+          << " MPa, peak shear " << fmt(s_max * 1e-6, 5) << " MPa, slip (eq. 5) " << n_slip
+          << " of " << n_contact << " nodes" << std::endl;
   }
 
 
@@ -734,12 +745,12 @@ namespace WheelRail
   void
   Simulator::apply_initial_conditions()
   {
-    const InitialParameters &ip = parameters.initial;
-    const auto extra = make_vector_function(ip.velocity_expression,
+    const InitialParameters &ip     = parameters.initial;
+    const auto               extra  = make_vector_function(ip.velocity_expression,
                                             ip.velocity_constants,
                                             "x,y,z",
                                             "Initial conditions/Velocity function");
-    const Point<dim> centre = Geometry::wheel_centre(parameters.geometry);
+    const Point<dim>         centre = Geometry::wheel_centre(parameters.geometry);
     solver->set_velocity([&](const Point<dim> &X, const types::material_id material) {
       Tensor<1, dim> v;
       for (unsigned int d = 0; d < dim; ++d)
@@ -755,8 +766,7 @@ namespace WheelRail
         {
           const Tensor<1, dim> r = X - centre;
           // omega e_y x r
-          v += ip.wheel_velocity +
-               ip.wheel_angular_velocity * Tensor<1, dim>({r[2], 0., -r[0]});
+          v += ip.wheel_velocity + ip.wheel_angular_velocity * Tensor<1, dim>({r[2], 0., -r[0]});
         }
       return v;
     });
@@ -794,9 +804,8 @@ namespace WheelRail
         std::array<double, 4> best     = {{std::numeric_limits<double>::max(), 0, 0, 0}};
         unsigned int          best_dof = 0;
         for (unsigned int i = 0; i < part.locally_owned_size(); ++i)
-          if (solver->dof_component(i) == 0 &&
-              (probe.material == numbers::invalid_material_id ||
-               solver->dof_material(i) == probe.material))
+          if (solver->dof_component(i) == 0 && (probe.material == numbers::invalid_material_id ||
+                                                solver->dof_material(i) == probe.material))
             {
               const std::array<double, 4> candidate = {
                 {points[i].distance(probe.target), points[i][0], points[i][1], points[i][2]}};
@@ -842,13 +851,12 @@ namespace WheelRail
     h                     = Utilities::MPI::max(h, mpi_communicator);
     const double distance = user.location.distance(user.target);
     AssertThrow(distance <= h,
-                ExcMessage("Output/Probe point = (" + fmt(user.target[0]) + ", " +
-                           fmt(user.target[1]) + ", " + fmt(user.target[2]) +
-                           ") m lies outside the mesh: its nearest node, (" +
-                           fmt(user.location[0]) + ", " + fmt(user.location[1]) + ", " +
-                           fmt(user.location[2]) + ") m, is " + fmt(distance) +
-                           " m away, more than the largest cell at that node (diameter " +
-                           fmt(h) + " m)."));
+                ExcMessage(
+                  "Output/Probe point = (" + fmt(user.target[0]) + ", " + fmt(user.target[1]) +
+                  ", " + fmt(user.target[2]) + ") m lies outside the mesh: its nearest node, (" +
+                  fmt(user.location[0]) + ", " + fmt(user.location[1]) + ", " +
+                  fmt(user.location[2]) + ") m, is " + fmt(distance) +
+                  " m away, more than the largest cell at that node (diameter " + fmt(h) + " m)."));
   }
 
 
@@ -872,10 +880,10 @@ namespace WheelRail
   void
   Simulator::add_statistics_row(const Energies &e)
   {
-    const double scale = std::max({std::abs(initial_energies.total()),
-                                   e.kinetic + e.internal + e.hourglass + e.damping,
-                                   std::abs(e.external_work),
-                                   1e-300});
+    const double scale   = std::max({std::abs(initial_energies.total()),
+                                     e.kinetic + e.internal + e.hourglass + e.damping,
+                                     std::abs(e.external_work),
+                                     1e-300});
     const double balance = e.total() - initial_energies.total();
     max_balance_error    = std::max(max_balance_error, std::abs(balance) / scale);
 
@@ -937,22 +945,21 @@ namespace WheelRail
       return;
     const bool block = parameters.problem.geometry == "block on plate";
     Sample     s;
-    s.t                  = e.time;
+    s.t = e.time;
     if (block)
       {
         s.block_momentum     = solver->momentum(Geometry::MaterialIds::block);
         s.plate_momentum     = solver->momentum(Geometry::MaterialIds::plate);
         s.block_displacement = solver->mean_displacement(Geometry::MaterialIds::block);
       }
-    s.contact_force      = contact ? contact->summary().force : Tensor<1, dim>();
-    s.relative_displacement =
-      contact ? contact->summary().relative_displacement : Tensor<1, dim>();
-    s.n_contact          = contact ? contact->summary().n_contact : 0;
-    s.kinetic            = e.kinetic;
-    s.external_work      = e.external_work;
-    s.friction           = e.friction;
-    s.total              = e.total();
-    s.tangential_stiffness = 0;
+    s.contact_force         = contact ? contact->summary().force : Tensor<1, dim>();
+    s.relative_displacement = contact ? contact->summary().relative_displacement : Tensor<1, dim>();
+    s.n_contact             = contact ? contact->summary().n_contact : 0;
+    s.kinetic               = e.kinetic;
+    s.external_work         = e.external_work;
+    s.friction              = e.friction;
+    s.total                 = e.total();
+    s.tangential_stiffness  = 0;
     for (const auto &p : contact->active_pairs())
       s.tangential_stiffness += parameters.contact.tangential_factor * p.stiffness;
     double fn = 0, ffn = 0;
@@ -962,7 +969,7 @@ namespace WheelRail
           fn += n.normal_force;
           ffn += n.cof * n.normal_force;
         }
-    s.mean_cof      = fn > 0 ? ffn / fn : 0.;
+    s.mean_cof                  = fn > 0 ? ffn / fn : 0.;
     const TrailingSlip trailing = trailing_micro_slip();
     s.trailing_slip             = trailing.magnitude;
     s.trailing_slip_rate        = trailing.rate;
@@ -1011,7 +1018,7 @@ namespace WheelRail
   void
   Simulator::write_vtu()
   {
-    const auto   stresses = solver->cell_stresses();
+    const auto    stresses = solver->cell_stresses();
     Vector<float> von_mises(triangulation.n_active_cells());
     Vector<float> material(triangulation.n_active_cells());
     Vector<float> rank(triangulation.n_active_cells());
@@ -1042,8 +1049,8 @@ namespace WheelRail
     // more per snapshot of the paper mesh than the fastest level (as long
     // as 100 explicit steps), for files about 25-35 % smaller
     DataOutBase::VtkFlags flags;
-    flags.time              = solver->time();
-    flags.cycle             = vtu_counter;
+    flags.time               = solver->time();
+    flags.cycle              = vtu_counter;
     const std::string &level = parameters.output.vtu_compression;
     flags.compression_level  = level == "best" ? DataOutBase::VtkFlags::best_compression :
                                level == "none" ? DataOutBase::VtkFlags::no_compression :
@@ -1064,9 +1071,10 @@ namespace WheelRail
   {
     if (robust_output_only())
       return;
-    pcout << "step " << std::setw(8) << e.step << "  t = " << std::setw(10) << fmt(e.time * 1e3) << " ms  E_kin " << fmt(e.kinetic) << " J  E_int "
-          << fmt(e.internal) << " J  E_hg " << fmt(e.hourglass, 3) << " J  D " << fmt(e.damping, 3)
-          << " J  W_ext " << fmt(e.external_work) << " J";
+    pcout << "step " << std::setw(8) << e.step << "  t = " << std::setw(10) << fmt(e.time * 1e3)
+          << " ms  E_kin " << fmt(e.kinetic) << " J  E_int " << fmt(e.internal) << " J  E_hg "
+          << fmt(e.hourglass, 3) << " J  D " << fmt(e.damping, 3) << " J  W_ext "
+          << fmt(e.external_work) << " J";
     if (contact)
       pcout << "  contact " << contact->summary().n_contact << " nodes, F = ("
             << fmt(contact->summary().force[0] * 1e-3, 4) << ", "
@@ -1096,29 +1104,29 @@ namespace WheelRail
                            const unsigned long  n_steps,
                            std::vector<double> &step_seconds) const
   {
-    const StepTimes &t     = solver->step_times();
-    const double     cells = triangulation.n_global_active_cells();
+    const StepTimes   &t       = solver->step_times();
+    const double       cells   = triangulation.n_global_active_cells();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     // the slowest rank sets the pace: maxima over the ranks
-    const double local[6] = {t.elements, t.contact, t.update, t.communication, t.energies,
-                             output_seconds};
-    double       slowest[6], fastest[6];
+    const double local[6] = {
+      t.elements, t.contact, t.update, t.communication, t.energies, output_seconds};
+    double slowest[6], fastest[6];
     Utilities::MPI::max(ArrayView<const double>(local, 6),
                         mpi_communicator,
                         ArrayView<double>(slowest, 6));
     Utilities::MPI::min(ArrayView<const double>(local, 6),
                         mpi_communicator,
                         ArrayView<double>(fastest, 6));
-    const double wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
+    const double                         wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
     const Utilities::System::MemoryStats memory = [] {
       Utilities::System::MemoryStats m;
       Utilities::System::get_memory_stats(m);
       return m;
     }();
-    const double peak_mb = Utilities::MPI::max(memory.VmHWM / 1024., mpi_communicator);
+    const double       peak_mb = Utilities::MPI::max(memory.VmHWM / 1024., mpi_communicator);
     const unsigned int family_cells =
       Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator);
-    const double ns      = n_steps > 0 ? wall / (cells * n_steps) * 1e9 : 0.;
+    const double ns = n_steps > 0 ? wall / (cells * n_steps) * 1e9 : 0.;
     // the paper's full run: 0.22 m of rolling at 2.6e-8 s
     const double full_steps = 0.22 / parameters.wheelset.rolling_speed / 2.6e-8;
     const double full_hours = ns * 1e-9 * cells * full_steps / 3600.;
@@ -1148,10 +1156,10 @@ namespace WheelRail
       {
         // the contact's parts, slowest and fastest rank (with one rank the
         // same): where the contact time goes and what does not scale
-        const ContactTimes &c           = contact->times();
-        const double parts[6] = {c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces};
-        const char * part_names[6] = {"search", "wait", "positions", "slaves", "exchange", "forces"};
-        double       most[6], least[6];
+        const ContactTimes &c     = contact->times();
+        const double parts[6]     = {c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces};
+        const char *part_names[6] = {"search", "wait", "positions", "slaves", "exchange", "forces"};
+        double      most[6], least[6];
         Utilities::MPI::max(ArrayView<const double>(parts, 6),
                             mpi_communicator,
                             ArrayView<double>(most, 6));
@@ -1171,8 +1179,8 @@ namespace WheelRail
     if (!step_seconds.empty())
       {
         const auto at = [&](const double q) {
-          const std::size_t k = std::min<std::size_t>(step_seconds.size() - 1,
-                                                      q * step_seconds.size());
+          const std::size_t k =
+            std::min<std::size_t>(step_seconds.size() - 1, q * step_seconds.size());
           std::nth_element(step_seconds.begin(), step_seconds.begin() + k, step_seconds.end());
           return 1e3 * step_seconds[k];
         };
@@ -1184,17 +1192,19 @@ namespace WheelRail
               << fmt(spread[1], 4) << ", 95th percentile " << fmt(spread[2], 4) << std::endl;
       }
     pcout << "  peak memory per rank " << fmt(peak_mb, 5) << " MB" << std::endl
-          << "  the paper's full run (" << fmt(full_steps, 6) << " steps of 2.6e-8 s) at this rate on "
-          << fmt(cells, 8) << " cells: " << fmt(full_hours, 3) << " h" << std::endl;
+          << "  the paper's full run (" << fmt(full_steps, 6)
+          << " steps of 2.6e-8 s) at this rate on " << fmt(cells, 8)
+          << " cells: " << fmt(full_hours, 3) << " h" << std::endl;
 
     std::ostringstream csv;
-    csv << "# wheelrail timing: wall seconds of the timed steps (slowest rank), ns per element-step "
-           "(wall), peak resident memory per rank (largest) in MB\n"
-        << "ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,"
-           "communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,"
-           "fastest_step_ms,median_step_ms,p95_step_ms\n"
-        << n_ranks << "," << cells << "," << solver->get_dof_handler().n_dofs() << "," << n_steps
-        << "," << wall << "," << ns;
+    csv
+      << "# wheelrail timing: wall seconds of the timed steps (slowest rank), ns per element-step "
+         "(wall), peak resident memory per rank (largest) in MB\n"
+      << "ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,"
+         "communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,"
+         "fastest_step_ms,median_step_ms,p95_step_ms\n"
+      << n_ranks << "," << cells << "," << solver->get_dof_handler().n_dofs() << "," << n_steps
+      << "," << wall << "," << ns;
     for (unsigned int i = 0; i < 6; ++i)
       csv << "," << slowest[i];
     csv << "," << peak_mb << "," << full_hours;
@@ -1208,14 +1218,14 @@ namespace WheelRail
 
   std::string
   Simulator::divergence_message(const unsigned long n,
-                                const Energies &    e,
+                                const Energies     &e,
                                 const double        velocity_spread,
                                 const double        deepest_penetration) const
   {
     // the first non-finite (or, if all are finite, the fastest) DoF of
     // each rank; the rank with the worst one tells
     const VectorType &u = solver->displacement(), &v = solver->velocity();
-    unsigned int      worst = numbers::invalid_unsigned_int;
+    unsigned int      worst       = numbers::invalid_unsigned_int;
     double            worst_value = -1;
     for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
       {
@@ -1229,21 +1239,24 @@ namespace WheelRail
             worst       = i;
           }
       }
-    const double global_worst = Utilities::MPI::max(worst_value, mpi_communicator);
-    const unsigned int my_rank = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int teller  = Utilities::MPI::min(
-      worst_value == global_worst ? my_rank : Utilities::MPI::n_mpi_processes(mpi_communicator),
-      mpi_communicator);
+    const double       global_worst = Utilities::MPI::max(worst_value, mpi_communicator);
+    const unsigned int my_rank      = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int teller =
+      Utilities::MPI::min(worst_value == global_worst ?
+                            my_rank :
+                            Utilities::MPI::n_mpi_processes(mpi_communicator),
+                          mpi_communicator);
     std::ostringstream where;
     if (my_rank == teller && worst != numbers::invalid_unsigned_int)
       {
-        const Point<dim> &X = solver->support_points()[worst];
-        const auto        m = solver->dof_material(worst);
-        const char *body = m == Geometry::MaterialIds::wheel ? "wheel" :
-                           m == Geometry::MaterialIds::rail  ? "rail" :
-                           m == Geometry::MaterialIds::bar   ? "bar" :
-                           m == Geometry::MaterialIds::block ? "block" :
-                           m == Geometry::MaterialIds::plate ? "plate" : "unknown body";
+        const Point<dim> &X    = solver->support_points()[worst];
+        const auto        m    = solver->dof_material(worst);
+        const char       *body = m == Geometry::MaterialIds::wheel ? "wheel" :
+                                 m == Geometry::MaterialIds::rail  ? "rail" :
+                                 m == Geometry::MaterialIds::bar   ? "bar" :
+                                 m == Geometry::MaterialIds::block ? "block" :
+                                 m == Geometry::MaterialIds::plate ? "plate" :
+                                                                     "unknown body";
         where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
               << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
               << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "
@@ -1251,8 +1264,7 @@ namespace WheelRail
               << " m, v = " << fmt(v.local_element(worst), 4) << " m/s"
               << (solver->boundary_dof_mask()[worst] ? " (a surface node)" : "");
       }
-    const std::string location =
-      Utilities::MPI::broadcast(mpi_communicator, where.str(), teller);
+    const std::string location = Utilities::MPI::broadcast(mpi_communicator, where.str(), teller);
 
     // the body's size, for the strain that gravity alone would cause
     double extent = 0;
@@ -1266,19 +1278,19 @@ namespace WheelRail
               lo = std::min(lo, p[d]);
               hi = std::max(hi, p[d]);
             }
-          lo = Utilities::MPI::min(lo, mpi_communicator);
-          hi = Utilities::MPI::max(hi, mpi_communicator);
+          lo     = Utilities::MPI::min(lo, mpi_communicator);
+          hi     = Utilities::MPI::max(hi, mpi_communicator);
           extent = std::max(extent, hi - lo);
         }
     }
     const MaterialParameters &material = parameters.material;
-    const double c              = material.wave_speed();
-    const double gravity_strain = material.density * parameters.solver.gravity.norm() * extent /
-                                  material.youngs_modulus;
-    const double dt             = solver->time_step();
-    const double stable         = solver->stable_time_step();
-    const double critical       = stable / parameters.solver.courant_factor;
-    const double h_min          = critical * c; // the smallest element length
+    const double              c        = material.wave_speed();
+    const double              gravity_strain =
+      material.density * parameters.solver.gravity.norm() * extent / material.youngs_modulus;
+    const double       dt       = solver->time_step();
+    const double       stable   = solver->stable_time_step();
+    const double       critical = stable / parameters.solver.courant_factor;
+    const double       h_min    = critical * c; // the smallest element length
     std::ostringstream message;
     message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
             << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
@@ -1299,14 +1311,16 @@ namespace WheelRail
               << " m/s^2: its weight alone strains a body of " << fmt(extent, 3) << " m by about "
               << fmt(gravity_strain, 3) << " (Time integration/Gravity)";
     else if (contact && deepest_penetration > 0.5 * h_min)
-      message << "a contact missed or overrun: slave nodes reached " << fmt(deepest_penetration * 1e3, 3)
-              << " mm into the master surface, more than half the smallest element length " << fmt(h_min * 1e3, 3)
+      message << "a contact missed or overrun: slave nodes reached "
+              << fmt(deepest_penetration * 1e3, 3)
+              << " mm into the master surface, more than half the smallest element length "
+              << fmt(h_min * 1e3, 3)
               << " mm (Contact/Search margin, Search interval; or Penalty scale factor too soft)";
     else if (contact && most_contact_nodes > 0)
       message << "the contact (up to " << most_contact_nodes
               << " nodes in contact so far), penalty scale factor "
-              << fmt(parameters.contact.penalty_scale)
-              << " (too stiff for the time step " << fmt(dt)
+              << fmt(parameters.contact.penalty_scale) << " (too stiff for the time step "
+              << fmt(dt)
               << " s, or too soft for the load: Contact/Penalty scale factor, Time "
                  "integration/Courant factor)";
     else if (dt > 0.95 * critical)
@@ -1342,15 +1356,15 @@ namespace WheelRail
       }
     if (resume)
       read_checkpoint();
-    const double        dt      = solver->time_step();
+    const double        dt = solver->time_step();
     const unsigned long n_steps =
       static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9));
     const OutputParameters &op   = parameters.output;
     const bool              test = parameters.problem.test_mode;
     for (const Probe &probe : probes)
-      pcout << (&probe == &probes.front() ? "Probe node" : "Wheel probe node (passes O)")
-            << " at (" << fmt(probe.location[0] * 1e3) << ", " << fmt(probe.location[1] * 1e3)
-            << ", " << fmt(probe.location[2] * 1e3) << ") mm" << std::endl;
+      pcout << (&probe == &probes.front() ? "Probe node" : "Wheel probe node (passes O)") << " at ("
+            << fmt(probe.location[0] * 1e3) << ", " << fmt(probe.location[1] * 1e3) << ", "
+            << fmt(probe.location[2] * 1e3) << ") mm" << std::endl;
 
     Timer timer(mpi_communicator, true);
     if (!resume)
@@ -1381,8 +1395,8 @@ namespace WheelRail
     auto last_checkpoint = std::chrono::steady_clock::now();
     // the timed part of the run: the steps after the warm-up
     using Clock                        = std::chrono::steady_clock;
-    Clock::time_point timed_start      = Clock::now();
-    double            output_seconds   = 0;
+    Clock::time_point   timed_start    = Clock::now();
+    double              output_seconds = 0;
     std::vector<double> step_seconds; // of the timed steps, for their spread
     const unsigned long warmup =
       std::min<unsigned long>(first_step + op.timing_warmup_steps, n_steps);
@@ -1396,9 +1410,9 @@ namespace WheelRail
             output_seconds = 0;
             timed_start    = Clock::now();
           }
-        const bool report_step = (n % op.report_interval == 0);
-        const bool stats_step  = (n % op.statistics_interval == 0) || report_step;
-        Energies   e;
+        const bool              report_step = (n % op.report_interval == 0);
+        const bool              stats_step  = (n % op.statistics_interval == 0) || report_step;
+        Energies                e;
         const Clock::time_point step_start = Clock::now();
         solver->step(stats_step ? &e : nullptr);
         const Clock::time_point output_start = Clock::now();
@@ -1408,7 +1422,8 @@ namespace WheelRail
         if (contact)
           {
             if (std::isfinite(contact->summary().max_penetration))
-              deepest_penetration = std::max(deepest_penetration, contact->summary().max_penetration);
+              deepest_penetration =
+                std::max(deepest_penetration, contact->summary().max_penetration);
             friction_violations += contact->summary().n_violation;
             most_contact_nodes = std::max(most_contact_nodes, contact->summary().n_contact);
           }
@@ -1418,14 +1433,16 @@ namespace WheelRail
           {
             const double wall = timer.wall_time();
             if (!std::isfinite(e.kinetic) || !std::isfinite(e.internal) ||
-                !std::isfinite(e.hourglass) || max_balance_error > parameters.output.divergence_limit)
+                !std::isfinite(e.hourglass) ||
+                max_balance_error > parameters.output.divergence_limit)
               {
                 write_statistics();
                 write_probe();
                 if (contact)
                   write_contact_nodes("contact_nodes.csv");
                 AssertThrow(false,
-                            ExcMessage(divergence_message(n, e, velocity_spread, deepest_penetration)));
+                            ExcMessage(
+                              divergence_message(n, e, velocity_spread, deepest_penetration)));
               }
             if (!have_initial_energies)
               {
@@ -1450,13 +1467,13 @@ namespace WheelRail
         // checkpoint every N steps, every M minutes (rank 0's clock
         // decides), and at a requested stop
         const bool stop = op.stop_after_step > 0 && n + 1 == op.stop_after_step && n + 1 < n_steps;
-        bool       due  = stop || (op.checkpoint_interval > 0 && (n + 1) % op.checkpoint_interval == 0);
+        bool due = stop || (op.checkpoint_interval > 0 && (n + 1) % op.checkpoint_interval == 0);
         if (op.checkpoint_minutes > 0)
           {
             const double minutes =
               std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.;
-            due = due || Utilities::MPI::broadcast(mpi_communicator,
-                                                   minutes >= op.checkpoint_minutes, 0);
+            due = due ||
+                  Utilities::MPI::broadcast(mpi_communicator, minutes >= op.checkpoint_minutes, 0);
           }
         if (due && n + 1 < n_steps)
           {
@@ -1467,8 +1484,9 @@ namespace WheelRail
           }
         if (stop)
           {
-            pcout << "Stopped after step " << n + 1 << " (Output/Stop after step) at t = "
-                  << fmt(solver->time() * 1e3) << " ms; checkpoint in " << output_directory
+            pcout << "Stopped after step " << n + 1
+                  << " (Output/Stop after step) at t = " << fmt(solver->time() * 1e3)
+                  << " ms; checkpoint in " << output_directory
                   << "/checkpoint; continue with: wheelrail CASE.prm --resume" << std::endl;
             return;
           }
@@ -1491,25 +1509,24 @@ namespace WheelRail
               << fmt(timer.wall_time() / (cells * n_steps) * 1e9 *
                        Utilities::MPI::n_mpi_processes(mpi_communicator),
                      4)
-              << " ns per element-step per rank (" << fmt(timer.wall_time() / (cells * n_steps) * 1e9, 4)
-              << " ns wall)" << std::endl;
+              << " ns per element-step per rank ("
+              << fmt(timer.wall_time() / (cells * n_steps) * 1e9, 4) << " ns wall)" << std::endl;
         report_timing(timed_seconds, output_seconds, n_steps - warmup, step_seconds);
         if (contact)
           pcout << "  contact: " << contact->n_searches() << " candidate searches ("
                 << contact->n_approach_searches() << " for the approach bound alone), "
                 << fmt(contact->search_seconds() / std::max(1u, contact->n_searches()) * 1e3, 3)
                 << " ms per search; at the last search " << contact->n_candidates().first
-                << " candidate slaves, " << contact->n_candidates().second
-                << " slave-face pairs" << std::endl;
-        pcout
-              << "  results in " << output_directory
+                << " candidate slaves, " << contact->n_candidates().second << " slave-face pairs"
+                << std::endl;
+        pcout << "  results in " << output_directory
               << "/ (solution.pvd, statistics, probe.csv, parameters.prm)" << std::endl;
       }
     if (wheelset && contact)
       {
         // a short human summary of the contact at the end of a rolling run
-        const ContactSummary &cs = contact->summary();
-        double p_max = 0, s_max = 0, x0 = 1e30, x1 = -1e30, y0 = 1e30, y1 = -1e30;
+        const ContactSummary &cs    = contact->summary();
+        double                p_max = 0, s_max = 0, x0 = 1e30, x1 = -1e30, y0 = 1e30, y1 = -1e30;
         for (const auto &s : contact->slave_states())
           if (s.in_contact)
             {
@@ -1524,15 +1541,17 @@ namespace WheelRail
           x0 = x1 = y0 = y1 = 0;
         if (!robust_output_only())
           {
-            pcout << "Summary at t = " << fmt(solver->time() * 1e3, 6) << " ms (wheel x = "
-                  << fmt(wheelset->axle_position()[0] * 1e3, 6) << " mm): F_N "
+            pcout << "Summary at t = " << fmt(solver->time() * 1e3, 6)
+                  << " ms (wheel x = " << fmt(wheelset->axle_position()[0] * 1e3, 6) << " mm): F_N "
                   << fmt(cs.force[2] * 1e-3, 5) << " kN, F_L " << fmt(cs.force[0] * 1e-3, 5)
                   << " kN, mu_a " << fmt(cs.force[2] != 0 ? cs.force[0] / cs.force[2] : 0., 4)
                   << "; patch " << fmt((x1 - x0) * 1e3, 4) << " x " << fmt((y1 - y0) * 1e3, 4)
                   << " mm (node extent), " << cs.n_contact << " nodes, peak pressure "
                   << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
-                  << " MPa, slip fraction " << fmt(cs.n_contact ? double(cs.n_slip) / cs.n_contact : 0., 3)
-                  << ", trailing micro-slip " << fmt(trailing_micro_slip().magnitude, 4) << " m/s" << std::endl;
+                  << " MPa, slip fraction "
+                  << fmt(cs.n_contact ? double(cs.n_slip) / cs.n_contact : 0., 3)
+                  << ", trailing micro-slip " << fmt(trailing_micro_slip().magnitude, 4) << " m/s"
+                  << std::endl;
           }
       }
     final_checks();
@@ -1558,15 +1577,15 @@ namespace WheelRail
         u.push_back(history[i + 1 + comp]);
         v.push_back(history[i + 4 + comp]);
       }
-    const GeometryParameters &g   = parameters.geometry;
-    const double              c0  = parameters.material.bar_wave_speed();
-    const double              tol = vp.tolerance;
-    const auto result = [&](const std::string &what,
+    const GeometryParameters &g      = parameters.geometry;
+    const double              c0     = parameters.material.bar_wave_speed();
+    const double              tol    = vp.tolerance;
+    const auto                result = [&](const std::string &what,
                             const double       measured,
                             const double       reference,
                             const std::string &unit,
                             const double       scale) {
-      const double error = std::abs(measured - reference) / std::abs(reference);
+      const double       error = std::abs(measured - reference) / std::abs(reference);
       const unsigned int digits = robust_output_only() ? 2 : 6;
       pcout << "Check: " << what << std::endl
             << "  measured  : " << fmt(measured * scale, digits) << " " << unit << std::endl
@@ -1575,8 +1594,8 @@ namespace WheelRail
         pcout << "  relative error " << fmt(error, 2) << ", ";
       else
         pcout << "  ";
-      pcout << "tolerance " << fmt(tol)
-            << ", within tolerance: " << (error <= tol ? "yes" : "no") << std::endl;
+      pcout << "tolerance " << fmt(tol) << ", within tolerance: " << (error <= tol ? "yes" : "no")
+            << std::endl;
     };
 
     if (vp.check == "wave arrival")
@@ -1624,8 +1643,8 @@ namespace WheelRail
         pcout << "Check: hourglass modes" << std::endl
               << "  hourglass energy / internal energy (time mean)          : " << fmt(ratio, 3)
               << std::endl
-              << "  hourglass-mode energy at QM = 0.1 / internal energy     : "
-              << fmt(ratio_ref, 3) << std::endl
+              << "  hourglass-mode energy at QM = 0.1 / internal energy     : " << fmt(ratio_ref, 3)
+              << std::endl
               << "  limit " << fmt(vp.hourglass_limit)
               << ", within limit: " << (ratio_ref <= vp.hourglass_limit ? "yes" : "no")
               << std::endl;
@@ -1633,7 +1652,8 @@ namespace WheelRail
     else if (vp.check == "inclined plane" || vp.check == "tangential sliding" ||
              vp.check == "impact")
       {
-        AssertThrow(parameters.problem.geometry == "block on plate" && contact && samples.size() > 4,
+        AssertThrow(parameters.problem.geometry == "block on plate" && contact &&
+                      samples.size() > 4,
                     ExcMessage("Verification/Check = " + vp.check +
                                " needs Problem/Geometry = block on plate, contact and at least "
                                "five statistics rows."));
@@ -1656,7 +1676,7 @@ namespace WheelRail
                 // after the first half (the block has settled on the plate
                 // from its initial drop) it must not creep: its drift stays
                 // within the elastic slip of the friction springs
-                const unsigned int half = samples.size() / 2;
+                const unsigned int half  = samples.size() / 2;
                 double             drift = 0, total = 0;
                 for (unsigned int i = half; i < samples.size(); ++i)
                   drift = std::max(drift,
@@ -1684,7 +1704,7 @@ namespace WheelRail
                 // least-squares slope of the block velocity over the second
                 // half, against the mean of g (sin - f(v) cos) over it
                 const unsigned int first = samples.size() / 2;
-                double st = 0, sv = 0, stt = 0, stv = 0, a_ref = 0;
+                double             st = 0, sv = 0, stt = 0, stv = 0, a_ref = 0;
                 for (unsigned int i = first; i < samples.size(); ++i)
                   {
                     const double t = samples[i].t, v = samples[i].block_momentum[0] / m_block;
@@ -1692,14 +1712,16 @@ namespace WheelRail
                     sv += v;
                     stt += t * t;
                     stv += t * v;
-                    a_ref += gn * (std::sin(theta) - law->coefficient(std::abs(v)) * std::cos(theta));
+                    a_ref +=
+                      gn * (std::sin(theta) - law->coefficient(std::abs(v)) * std::cos(theta));
                   }
                 const double n = samples.size() - first;
                 const double a = (n * stv - st * sv) / (n * stt - st * st);
                 a_ref /= n;
                 pcout << "  sliding: mean velocity " << fmt(sv / n, 4) << " m/s, f at it "
                       << fmt(law->coefficient(std::abs(sv / n)), 5) << std::endl;
-                result("sliding acceleration g (sin theta - f(v) cos theta)", a, a_ref, "m/s^2", 1.);
+                result(
+                  "sliding acceleration g (sin theta - f(v) cos theta)", a, a_ref, "m/s^2", 1.);
               }
           }
         else if (vp.check == "tangential sliding")
@@ -1708,9 +1730,9 @@ namespace WheelRail
             double             ratio = 0;
             for (unsigned int i = first; i < samples.size(); ++i)
               {
-                const Tensor<1, dim> F = samples[i].contact_force;
-                const double fn        = F[2];
-                const double v         = samples[i].block_momentum[0] / m_block;
+                const Tensor<1, dim> F  = samples[i].contact_force;
+                const double         fn = F[2];
+                const double         v  = samples[i].block_momentum[0] / m_block;
                 ratio += std::abs(F[0]) / (law->coefficient(std::abs(v)) * fn);
               }
             ratio /= samples.size() - first;
@@ -1726,7 +1748,8 @@ namespace WheelRail
           }
         else
           {
-            const Tensor<1, dim> p0 = samples.front().block_momentum + samples.front().plate_momentum;
+            const Tensor<1, dim> p0 =
+              samples.front().block_momentum + samples.front().plate_momentum;
             const Tensor<1, dim> p1 = samples.back().block_momentum + samples.back().plate_momentum;
             const double         dp = (p1 - p0).norm() / p0.norm();
             unsigned int         max_contact = 0;
@@ -1764,9 +1787,10 @@ namespace WheelRail
         Tensor<1, dim>     rate;
         for (unsigned int i = first; i < samples.size(); ++i)
           {
-            fn_deviation = std::max(fn_deviation,
-                                    std::abs(samples[i].contact_force[2] - wheelset->static_load()) /
-                                      wheelset->static_load());
+            fn_deviation =
+              std::max(fn_deviation,
+                       std::abs(samples[i].contact_force[2] - wheelset->static_load()) /
+                         wheelset->static_load());
             fn += samples[i].contact_force[2] / (samples.size() - first);
             fl += samples[i].contact_force[0] / (samples.size() - first);
             slip += samples[i].trailing_slip / (samples.size() - first);
@@ -1789,10 +1813,11 @@ namespace WheelRail
         // finer cells is pushed up unless the penalty and the surface
         // geometry match: Contact/Penalty stiffness, Mesh/Rolling path cell size)
         pcout << "  largest |F_N - static load| / static load over the second half "
-              << fmt(fn_deviation, 2) << " (limit 0.05), within: "
-              << (fn_deviation <= 0.05 ? "yes" : "no") << std::endl
-              << "  mean F_L / F_N " << fmt(fl / fn, 2) << " (limit 0.005), within: "
-              << (std::abs(fl / fn) <= 0.005 ? "yes" : "no") << std::endl
+              << fmt(fn_deviation, 2)
+              << " (limit 0.05), within: " << (fn_deviation <= 0.05 ? "yes" : "no") << std::endl
+              << "  mean F_L / F_N " << fmt(fl / fn, 2)
+              << " (limit 0.005), within: " << (std::abs(fl / fn) <= 0.005 ? "yes" : "no")
+              << std::endl
               << "  mean trailing longitudinal micro-slip s_x / V " << fmt(creepage, 2)
               << " (limit 1e-4), within: " << (std::abs(creepage) <= 1e-4 ? "yes" : "no")
               << std::endl
@@ -1833,24 +1858,23 @@ namespace WheelRail
                 fn += samples[i].contact_force[2];
                 cof += samples[i].mean_cof / (samples.size() - first);
               }
-            const auto   law      = contact->friction_law();
-            const double mu_n     = parameters.wheelset.traction_coefficient;
-            const double f_limit  = parameters.contact.friction_law == "exponential" ?
-                                      parameters.contact.dynamic_coefficient :
-                                      law->coefficient(0.);
+            const auto   law     = contact->friction_law();
+            const double mu_n    = parameters.wheelset.traction_coefficient;
+            const double f_limit = parameters.contact.friction_law == "exponential" ?
+                                     parameters.contact.dynamic_coefficient :
+                                     law->coefficient(0.);
             // below saturation: the torque also accelerates the wheel's
             // rotation as the traction accelerates the vehicle
-            const double steady   = wheelset->steady_traction_coefficient();
+            const double steady = wheelset->steady_traction_coefficient();
             // saturated: the traction is limited by friction, f for Coulomb,
             // near f_D for the exponential law (SPEC 8, the paper's finding)
             const double expected = steady < f_limit ? steady : f_limit;
             pcout << "  mu_n " << fmt(mu_n) << ", steady rolling under the torque (vehicle and "
                   << "wheel accelerating) " << fmt(steady, 5) << ", saturation level "
-                  << fmt(f_limit)
-                  << (steady > f_limit ? " (saturated)" : " (below saturation)") << std::endl
+                  << fmt(f_limit) << (steady > f_limit ? " (saturated)" : " (below saturation)")
+                  << std::endl
                   << "  mean local COF of the contact nodes over the second half "
-                  << fmt(cof, robust_output_only() ? 2 : 5)
-                  << std::endl;
+                  << fmt(cof, robust_output_only() ? 2 : 5) << std::endl;
             result("achieved traction coefficient mu_a = F_L / F_N, mean over the second half",
                    fl / fn,
                    expected,
@@ -1862,8 +1886,8 @@ namespace WheelRail
       {
         pcout << "Check: energy balance over " << solver->step_number() << " steps" << std::endl
               << "  largest |balance| / energy scale : " << fmt(max_balance_error, 2) << std::endl
-              << "  tolerance " << fmt(tol) << ", within tolerance: "
-              << (max_balance_error <= tol ? "yes" : "no") << std::endl;
+              << "  tolerance " << fmt(tol)
+              << ", within tolerance: " << (max_balance_error <= tol ? "yes" : "no") << std::endl;
       }
   }
 } // namespace WheelRail

@@ -116,8 +116,8 @@ namespace WheelRail
     if (rank == 0)
       {
         std::ofstream info(fresh + "/info");
-        info << "wheelrail checkpoint: step " << solver->step_number() << ", t = "
-             << solver->time() << " s, " << ranks << " rank(s)\n";
+        info << "wheelrail checkpoint: step " << solver->step_number() << ", t = " << solver->time()
+             << " s, " << ranks << " rank(s)\n";
         info.flush();
         AssertThrow(info.good(), ExcMessage("Cannot write '" + fresh + "/info'."));
         info.close();
@@ -174,8 +174,8 @@ namespace WheelRail
       {
         std::string message = "--resume: the checkpoint in '" + checkpoint_directory +
                               "' was written with other values of " +
-                              std::to_string(refused.size()) +
-                              " entr" + (refused.size() == 1 ? "y" : "ies") +
+                              std::to_string(refused.size()) + " entr" +
+                              (refused.size() == 1 ? "y" : "ies") +
                               " that change the computed state (checkpoint -> this run):";
         for (const auto &c : refused)
           message += "\n" + c.entry + ": " + c.old_value + " -> " + c.new_value;
@@ -190,12 +190,11 @@ namespace WheelRail
     const unsigned long n_steps =
       static_cast<unsigned long>(std::ceil(parameters.solver.end_time / header.time_step - 1e-9));
     AssertThrow(n_steps > header.step,
-                ExcMessage("--resume: Time integration/End time = " +
-                           fmt(parameters.solver.end_time) + " s is reached at step " +
-                           std::to_string(n_steps) + ", and the checkpoint in '" +
-                           checkpoint_directory + "' is at step " + std::to_string(header.step) +
-                           " (t = " + fmt(header.time) +
-                           " s): nothing to resume. Set a later End time."));
+                ExcMessage(
+                  "--resume: Time integration/End time = " + fmt(parameters.solver.end_time) +
+                  " s is reached at step " + std::to_string(n_steps) + ", and the checkpoint in '" +
+                  checkpoint_directory + "' is at step " + std::to_string(header.step) +
+                  " (t = " + fmt(header.time) + " s): nothing to resume. Set a later End time."));
 
     if (!allowed.empty())
       {
@@ -213,8 +212,8 @@ namespace WheelRail
     const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     // check_checkpoint() has verified the files and set the directory
-    const std::string  name = rank_file(checkpoint_directory, rank);
-    std::ifstream      file(name, std::ios::binary);
+    const std::string name = rank_file(checkpoint_directory, rank);
+    std::ifstream     file(name, std::ios::binary);
     AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
     Checkpoint::Reader       in(file, name);
     const Checkpoint::Header header = Checkpoint::read_header(in, name);
@@ -236,11 +235,13 @@ namespace WheelRail
                            fmt(time_step, 10) + " s (another executable?)."));
     bool has = false;
     in.pod(has);
-    AssertThrow(has == (contact != nullptr), ExcMessage("The checkpoint's contact setting differs."));
+    AssertThrow(has == (contact != nullptr),
+                ExcMessage("The checkpoint's contact setting differs."));
     if (contact)
       contact->load(in);
     in.pod(has);
-    AssertThrow(has == (wheelset != nullptr), ExcMessage("The checkpoint's wheelset setting differs."));
+    AssertThrow(has == (wheelset != nullptr),
+                ExcMessage("The checkpoint's wheelset setting differs."));
     if (wheelset)
       wheelset->load(in);
     std::string table;
@@ -277,7 +278,8 @@ namespace WheelRail
     in.pod(most_contact_nodes);
     std::uint64_t magic = 0;
     in.pod(magic);
-    AssertThrow(magic == Checkpoint::magic, ExcMessage("The checkpoint '" + name + "' is corrupt."));
+    AssertThrow(magic == Checkpoint::magic,
+                ExcMessage("The checkpoint '" + name + "' is corrupt."));
     pcout << "Resumed from " << checkpoint_directory << " at step " << solver->step_number()
           << ", t = " << fmt(solver->time() * 1e3) << " ms" << std::endl;
   }

@@ -41,8 +41,8 @@ namespace WheelRail
 
 
   StaticContactSolver::StaticContactSolver(const Parameters &parameters,
-                                           ExplicitSolver &  solver,
-                                           PenaltyContact &  contact,
+                                           ExplicitSolver   &solver,
+                                           PenaltyContact   &contact,
                                            MPI_Comm          comm)
     : parameters(parameters)
     , solver(solver)
@@ -62,7 +62,8 @@ namespace WheelRail
         std::vector<bool> mask(dim, false);
         for (unsigned int d = 0; d < dim; ++d)
           mask[d] = components.find("xyz"[d]) != std::string::npos;
-        VectorTools::interpolate_boundary_values(dof_handler, id, zero, constraints, ComponentMask(mask));
+        VectorTools::interpolate_boundary_values(
+          dof_handler, id, zero, constraints, ComponentMask(mask));
       }
     VectorTools::interpolate_boundary_values(dof_handler,
                                              Geometry::BoundaryIds::wheel_bore,
@@ -78,9 +79,12 @@ namespace WheelRail
 
     // K and its AMG, once: the contact tangent stays outside (StaticTangent)
     {
-      const IndexSet &                  owned = dof_handler.locally_owned_dofs();
+      const IndexSet                   &owned = dof_handler.locally_owned_dofs();
       TrilinosWrappers::SparsityPattern sparsity(owned, owned, relevant, mpi_communicator);
-      DoFTools::make_sparsity_pattern(dof_handler, sparsity, constraints, false,
+      DoFTools::make_sparsity_pattern(dof_handler,
+                                      sparsity,
+                                      constraints,
+                                      false,
                                       Utilities::MPI::this_mpi_process(mpi_communicator));
       sparsity.compress();
       stiffness_matrix.reinit(sparsity);
@@ -123,14 +127,14 @@ namespace WheelRail
 
 
   Epetra_MultiVector
-  StaticContactSolver::rigid_body_modes(const DoFHandler<dim> &               dof_handler,
+  StaticContactSolver::rigid_body_modes(const DoFHandler<dim>                &dof_handler,
                                         const TrilinosWrappers::SparseMatrix &matrix)
   {
-    const IndexSet &   owned = dof_handler.locally_owned_dofs();
+    const IndexSet    &owned = dof_handler.locally_owned_dofs();
     Epetra_MultiVector modes(matrix.trilinos_matrix().OperatorDomainMap(), 2 * dim);
     AssertThrow(modes.ConstantStride() && modes.MyLength() == int(owned.n_elements()),
                 ExcInternalError());
-    const FiniteElement<dim> &           fe = dof_handler.get_fe();
+    const FiniteElement<dim>            &fe = dof_handler.get_fe();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -167,9 +171,9 @@ namespace WheelRail
 
 
   void
-  StaticTangent::set_contact_pairs(const std::vector<ContactPair> &  pairs,
+  StaticTangent::set_contact_pairs(const std::vector<ContactPair>  &pairs,
                                    const AffineConstraints<double> &constraints,
-                                   const IndexSet &                 owned)
+                                   const IndexSet                  &owned)
   {
     // the owner of a DoF knows its constraint; its entries (pair, DoF,
     // coefficient) go to every rank, which keeps those on its owned DoFs
@@ -177,10 +181,10 @@ namespace WheelRail
     std::vector<Entry> mine;
     for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        const ContactPair &pair    = pairs[p];
-        const double       c[5]    = {1., -pair.shape[0], -pair.shape[1], -pair.shape[2], -pair.shape[3]};
-        const types::global_dof_index node[5] = {pair.slave, pair.master[0], pair.master[1],
-                                                 pair.master[2], pair.master[3]};
+        const ContactPair &pair = pairs[p];
+        const double c[5] = {1., -pair.shape[0], -pair.shape[1], -pair.shape[2], -pair.shape[3]};
+        const types::global_dof_index node[5] = {
+          pair.slave, pair.master[0], pair.master[1], pair.master[2], pair.master[3]};
         for (unsigned int a = 0; a < 5; ++a)
           for (unsigned int i = 0; i < dim; ++i)
             {
@@ -224,14 +228,14 @@ namespace WheelRail
 
 
   void
-  StaticTangent::vmult(TrilinosWrappers::MPI::Vector &      dst,
+  StaticTangent::vmult(TrilinosWrappers::MPI::Vector       &dst,
                        const TrilinosWrappers::MPI::Vector &src) const
   {
     K.vmult(dst, src);
     if (stiffness.empty())
       return;
     const double *x = src.trilinos_vector()[0];
-    double *      y = dst.trilinos_vector()[0];
+    double       *y = dst.trilinos_vector()[0];
     for (unsigned int p = 0; p < stiffness.size(); ++p)
       {
         double g = 0;
@@ -250,7 +254,7 @@ namespace WheelRail
   double
   StaticContactSolver::solve_at(const double delta, StaticResult &result, std::ostream &log)
   {
-    const auto &    part  = *solver.partitioner();
+    const auto     &part  = *solver.partitioner();
     const IndexSet &owned = solver.get_dof_handler().locally_owned_dofs();
 
     // the bore moves down rigidly by delta
@@ -289,18 +293,21 @@ namespace WheelRail
         // A node projecting onto a face edge or corner makes the contact
         // force non-smooth; Newton then stalls at a tiny residual. Accept a
         // stalled iteration below 10 x the tolerance.
-        if (it > 2 && norm > 0.9 * previous_norm && norm <= 10 * parameters.statics.newton_tolerance * load_scale)
+        if (it > 2 && norm > 0.9 * previous_norm &&
+            norm <= 10 * parameters.statics.newton_tolerance * load_scale)
           {
-            log << "    (stalled at " << norm / load_scale << " of the load: accepted)" << std::endl;
+            log << "    (stalled at " << norm / load_scale << " of the load: accepted)"
+                << std::endl;
             return force;
           }
         AssertThrow(
           it < parameters.statics.max_newton_iterations,
           ExcMessage(
             "The static contact solve did not converge in Static solve/Max Newton iterations = " +
-            std::to_string(parameters.statics.max_newton_iterations) + " iterations at the axle "
-            "displacement " + fmt(delta * 1e6) + " um: residual " +
-            fmt(norm / load_scale) + " of the load (" +
+            std::to_string(parameters.statics.max_newton_iterations) +
+            " iterations at the axle "
+            "displacement " +
+            fmt(delta * 1e6) + " um: residual " + fmt(norm / load_scale) + " of the load (" +
             fmt(previous_norm / load_scale) +
             " in the iteration before) against Static solve/Newton tolerance = " +
             fmt(parameters.statics.newton_tolerance) + ". " +
@@ -334,7 +341,7 @@ namespace WheelRail
           eta = std::clamp(0.5 * parameters.statics.newton_tolerance * load_scale / norm,
                            parameters.statics.linear_tolerance,
                            1e-2);
-        SolverControl control(5000, eta * rhs.l2_norm());
+        SolverControl                           control(5000, eta * rhs.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         try
           {
@@ -344,8 +351,8 @@ namespace WheelRail
           {
             AssertThrow(false,
                         ExcMessage("CG with AMG did not converge in the static contact solve "
-                                   "(residual " + fmt(e.last_residual) +
-                                   " after " + std::to_string(e.last_step) +
+                                   "(residual " +
+                                   fmt(e.last_residual) + " after " + std::to_string(e.last_step) +
                                    " iterations): check the boundary conditions."));
           }
         result.linear_iterations += control.last_step();
@@ -359,9 +366,9 @@ namespace WheelRail
           {
             for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
               trial.local_element(i) =
-                u.local_element(i) +
-                (constraints.is_constrained(part.local_to_global(i)) ? 0. :
-                                                                        alpha * du[part.local_to_global(i)]);
+                u.local_element(i) + (constraints.is_constrained(part.local_to_global(i)) ?
+                                        0. :
+                                        alpha * du[part.local_to_global(i)]);
             const double trial_norm = evaluate(trial);
             if (trial_norm < norm || ls == 8)
               {
@@ -424,16 +431,16 @@ namespace WheelRail
           break;
         if (F1 <= 0)
           {
-            AssertThrow(
-              n_closing < max_closing,
-              ExcMessage("The static contact solve found no contact with the axle lowered by " +
-                         fmt(d1) + " m, " + fmt(d1 - gap) +
-                         " m beyond Geometry/Wheel/Initial gap = " + fmt(gap) +
-                         " m (" + std::to_string(1 << max_closing) +
-                         " x the Hertz approach of the load): the wheel does not meet the "
-                         "rail where Geometry/Wheel/Initial gap and Centre x and "
-                         "Geometry/Rail place it, or Contact/Slave boundary and Master "
-                         "boundary are not the surfaces that touch."));
+            AssertThrow(n_closing < max_closing,
+                        ExcMessage(
+                          "The static contact solve found no contact with the axle lowered by " +
+                          fmt(d1) + " m, " + fmt(d1 - gap) +
+                          " m beyond Geometry/Wheel/Initial gap = " + fmt(gap) + " m (" +
+                          std::to_string(1 << max_closing) +
+                          " x the Hertz approach of the load): the wheel does not meet the "
+                          "rail where Geometry/Wheel/Initial gap and Centre x and "
+                          "Geometry/Rail place it, or Contact/Slave boundary and Master "
+                          "boundary are not the surfaces that touch."));
             ++n_closing;
             d0 = d1;
             F0 = F1;
@@ -441,33 +448,31 @@ namespace WheelRail
             continue;
           }
         ++n_load;
-        AssertThrow(
-          n_load < max_load,
-          ExcMessage(
-            "The static contact solve did not reach Static solve/Axle load within Static "
-            "solve/Load tolerance = " +
-            fmt(parameters.statics.load_tolerance) + " in " +
-            std::to_string(max_load) + " load iterations: contact force " +
-            fmt(F1 * 1e-3) + " kN against the target " +
-            fmt(target * 1e-3) + " kN (relative error " +
-            fmt(std::abs(F1 - target) / target) + ", " +
-            fmt(std::abs(F0 - target) / target) +
-            " in the iteration before), axle lowered by " + fmt(d1 * 1e6) +
-            " um, " + fmt((d1 - gap) * 1e6) + " um beyond the initial gap. " +
-            (std::abs(F1 - F0) <= 2 * parameters.statics.load_tolerance * target ?
-               "The force has stopped changing: Load tolerance is finer than the Newton "
-               "solves resolve the force (Static solve/Newton tolerance, Linear solver "
-               "tolerance)." :
-               "The force still changes: the contact does not stiffen like a Hertzian "
-               "one (Contact/Penalty scale factor, or the contact set switching between "
-               "load iterations).")));
+        AssertThrow(n_load < max_load,
+                    ExcMessage(
+                      "The static contact solve did not reach Static solve/Axle load within Static "
+                      "solve/Load tolerance = " +
+                      fmt(parameters.statics.load_tolerance) + " in " + std::to_string(max_load) +
+                      " load iterations: contact force " + fmt(F1 * 1e-3) +
+                      " kN against the target " + fmt(target * 1e-3) + " kN (relative error " +
+                      fmt(std::abs(F1 - target) / target) + ", " +
+                      fmt(std::abs(F0 - target) / target) +
+                      " in the iteration before), axle lowered by " + fmt(d1 * 1e6) + " um, " +
+                      fmt((d1 - gap) * 1e6) + " um beyond the initial gap. " +
+                      (std::abs(F1 - F0) <= 2 * parameters.statics.load_tolerance * target ?
+                         "The force has stopped changing: Load tolerance is finer than the Newton "
+                         "solves resolve the force (Static solve/Newton tolerance, Linear solver "
+                         "tolerance)." :
+                         "The force still changes: the contact does not stiffen like a Hertzian "
+                         "one (Contact/Penalty scale factor, or the contact set switching between "
+                         "load iterations).")));
         // secant on F^(2/3), nearly linear in the approach for Hertz
         const double g0 = std::cbrt(F0 * F0) - std::cbrt(target * target);
         const double g1 = std::cbrt(F1 * F1) - std::cbrt(target * target);
         const double d2 = (g1 != g0) ? d1 - g1 * (d1 - d0) / (g1 - g0) : gap + 1.1 * (d1 - gap);
-        d0 = d1;
-        F0 = F1;
-        d1 = d2 > gap ? d2 : gap + 0.5 * (d1 - gap);
+        d0              = d1;
+        F0              = F1;
+        d1              = d2 > gap ? d2 : gap + 0.5 * (d1 - gap);
       }
     result.axle_displacement = d1;
     result.contact_force     = F1;

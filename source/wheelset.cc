@@ -8,8 +8,8 @@
 namespace WheelRail
 {
   Wheelset::Wheelset(const WheelsetParameters &parameters,
-                     const SolverParameters &  solver,
-                     const Point<dim> &        axle_centre)
+                     const SolverParameters   &solver,
+                     const Point<dim>         &axle_centre)
     : prm(parameters)
     , g(solver.gravity.norm())
     , centre(axle_centre)
@@ -27,7 +27,7 @@ namespace WheelRail
     i_bore  = polar_inertia;
     m_wheel = fe_wheel_mass;
     i_wheel = fe_wheel_inertia;
-    m_axle = prm.unsprung_mass - fe_wheel_mass;
+    m_axle  = prm.unsprung_mass - fe_wheel_mass;
     AssertThrow(m_axle > 0,
                 ExcMessage("Wheelset/Unsprung mass (" + std::to_string(prm.unsprung_mass) +
                            " kg) must exceed the mass of the FE wheel (" +
@@ -71,8 +71,8 @@ namespace WheelRail
     velocity      = Tensor<1, dim>({prm.rolling_speed, 0., 0.});
     // rolling towards +x turns the wheel about +y: the contact point
     // (x - x_axle = -r e_z) then has omega e_y x (-r e_z) = -V e_x
-    omega         = prm.rolling_speed / rolling_radius;
-    theta         = 0;
+    omega = prm.rolling_speed / rolling_radius;
+    theta = 0;
     d_c = v_c = 0;
     work = damper_loss = 0;
     active             = true;

@@ -13,13 +13,13 @@ int
 main()
 {
   // exponential law (paper eq. 1) against f_D + (f_S - f_D) exp(-k s)
-  const auto law = FrictionLaw::create("exponential", 0.5, 0.32, 6.);
+  const auto law       = FrictionLaw::create("exponential", 0.5, 0.32, 6.);
   double     max_error = 0;
   std::printf("exponential law f_S = 0.5, f_D = 0.32, k = 6 s/m\n");
   for (const double s : {0., 0.01, 0.05, 0.1, 0.29, 0.4, 1., 10.})
     {
       const double f = law->coefficient(s), ref = 0.32 + 0.18 * std::exp(-6. * s);
-      max_error      = std::max(max_error, std::abs(f - ref));
+      max_error = std::max(max_error, std::abs(f - ref));
       std::printf("  s_n = %5.2f m/s: f = %.6f\n", s, f);
     }
   std::printf("  largest |f - formula| = %.1e\n", max_error);
@@ -38,7 +38,7 @@ main()
       const double               limit = 0.8 * std::abs(u(random));
       bool                       slipping;
       double                     lost;
-      const auto F = return_map(trial, limit, 1e6, slipping, lost);
+      const auto                 F = return_map(trial, limit, 1e6, slipping, lost);
       violations += F.norm() > limit * (1 + 1e-14);
       direction_errors += (F - (F.norm() / trial.norm()) * trial).norm() > 1e-14;
       (slipping ? slips : sticks) += 1;

@@ -108,9 +108,9 @@ namespace WheelRail
         bytes += n;
       }
 
-      std::ostream &    out;
+      std::ostream      &out;
       boost::crc_32_type crc;
-      std::uint64_t     bytes = 0;
+      std::uint64_t      bytes = 0;
     };
 
     /** Reads values in the order a Writer wrote them. */
@@ -179,19 +179,19 @@ namespace WheelRail
                     dealii::ExcMessage("The checkpoint " + name + " ends early (truncated?)."));
       }
 
-      std::istream &    in;
+      std::istream     &in;
       const std::string name;
     };
 
     /** What a rank file records before the state. */
     struct Header
     {
-      unsigned int              ranks = 0;
-      dealii::types::global_cell_index cells = 0;
-      dealii::types::global_dof_index  dofs  = 0;
-      unsigned long             step      = 0;
-      double                    time      = 0;
-      double                    time_step = 0;
+      unsigned int                     ranks     = 0;
+      dealii::types::global_cell_index cells     = 0;
+      dealii::types::global_dof_index  dofs      = 0;
+      unsigned long                    step      = 0;
+      double                           time      = 0;
+      double                           time_step = 0;
       /** Every parameter as ParameterHandler::ShortPRM prints it. */
       std::string parameters;
     };
@@ -233,8 +233,8 @@ namespace WheelRail
      *  resumable_entries(), @p refused all others (an entry present in
      *  only one of them has the value "(not declared)" in the other). */
     void
-    compare_parameters(const std::string & old_record,
-                       const std::string & new_record,
+    compare_parameters(const std::string   &old_record,
+                       const std::string   &new_record,
                        std::vector<Change> &allowed,
                        std::vector<Change> &refused);
   } // namespace Checkpoint

@@ -42,11 +42,11 @@ namespace WheelRail
   /** State of one slave node, available to output and post-processing. */
   struct ContactNodeState
   {
-    Point<dim>     X;            ///< reference position [m]
-    Point<dim>     x;            ///< current position [m]
-    double         area = 0;     ///< tributary area [m^2]
+    Point<dim>     X;                  ///< reference position [m]
+    Point<dim>     x;                  ///< current position [m]
+    double         area       = 0;     ///< tributary area [m^2]
     bool           in_contact = false; ///< normal nodal force > 0 (paper eq. 4)
-    double         gap          = 0;   ///< n.(x_s - x_c) [m], < 0 = penetration
+    double         gap        = 0;     ///< n.(x_s - x_c) [m], < 0 = penetration
     Tensor<1, dim> normal;             ///< outward normal of the master face
     double         normal_force = 0;   ///< |F_n| [N]
     Tensor<1, dim> tangential_force;   ///< F_t on the slave [N]
@@ -54,11 +54,11 @@ namespace WheelRail
     /** de / dt: the slave's velocity relative to the master material under
      *  it (elastic spring rate plus slip) [m/s]; |slip_rate| = s_n. */
     Tensor<1, dim> slip_rate;
-    double         cof           = 0;  ///< local coefficient of friction
-    bool           slipping      = false; ///< the return map was active
+    double         cof      = 0;     ///< local coefficient of friction
+    bool           slipping = false; ///< the return map was active
     /** Friction memory: master face and face coordinates of the contact point. */
-    int    face = -1;
-    double xi = 0, eta = 0;
+    int        face = -1;
+    double     xi = 0, eta = 0;
     double     mass = 0;   ///< lumped nodal mass (contact damping) [kg]
     Point<dim> x_previous; ///< position at the previous step
     double     gap_previous = 0;
@@ -77,10 +77,10 @@ namespace WheelRail
   /** Contact results carried over to a master (rail-top) node. */
   struct MasterNodeState
   {
-    Point<dim>     X;                ///< reference position [m]
-    double         area         = 0; ///< tributary area on the master surface [m^2]
-    double         normal_force = 0; ///< sum of N_j |F_n| of the slaves on its faces [N]
-    Tensor<1, dim> tangential_force; ///< the same for F_t (on the slave side) [N]
+    Point<dim>     X;                 ///< reference position [m]
+    double         area         = 0;  ///< tributary area on the master surface [m^2]
+    double         normal_force = 0;  ///< sum of N_j |F_n| of the slaves on its faces [N]
+    Tensor<1, dim> tangential_force;  ///< the same for F_t (on the slave side) [N]
     double         slip_velocity = 0; ///< N_j-weighted mean of the slaves' s_n [m/s]
     double         cof           = 0; ///< N_j-weighted mean local COF
   };
@@ -98,11 +98,11 @@ namespace WheelRail
   /** Totals over all slave nodes. */
   struct ContactSummary
   {
-    Tensor<1, dim> force;          ///< on the (first pass's) slave body [N]
-    unsigned int   n_contact   = 0; ///< nodes with F_n > 0
-    unsigned int   n_slip      = 0; ///< nodes where the return map was active
-    unsigned int   n_violation = 0; ///< |F_t| > f |F_n| (must stay 0)
-    double         elastic_energy = 0; ///< 1/2 k g^2 + 1/2 |F_t|^2 / k_t [J]
+    Tensor<1, dim> force;               ///< on the (first pass's) slave body [N]
+    unsigned int   n_contact       = 0; ///< nodes with F_n > 0
+    unsigned int   n_slip          = 0; ///< nodes where the return map was active
+    unsigned int   n_violation     = 0; ///< |F_t| > f |F_n| (must stay 0)
+    double         elastic_energy  = 0; ///< 1/2 k g^2 + 1/2 |F_t|^2 / k_t [J]
     double         max_penetration = 0; ///< [m]
     /** Mean over the contact nodes of the slave's displacement relative to
      *  the material point of the master under it [m]: elastic spring
@@ -136,15 +136,15 @@ namespace WheelRail
     void
     load(Checkpoint::Reader &in);
 
-    PenaltyContact(const ContactParameters & contact,
+    PenaltyContact(const ContactParameters  &contact,
                    const MaterialParameters &material,
                    MPI_Comm                  comm);
 
     /** Collect slave nodes and master faces of the mesh. */
     void
-    setup(const DoFHandler<dim> &                                    dof_handler,
+    setup(const DoFHandler<dim>                                    &dof_handler,
           const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-          const LinearAlgebra::distributed::Vector<double> &        lumped_mass);
+          const LinearAlgebra::distributed::Vector<double>         &lumped_mass);
 
     /**
      * Add the contact forces for the displacement @p u (ghosted) to the
@@ -156,7 +156,7 @@ namespace WheelRail
     add_forces(const LinearAlgebra::distributed::Vector<double> &u,
                const double                                      dt,
                const bool                                        advance,
-               LinearAlgebra::distributed::Vector<double> &      f);
+               LinearAlgebra::distributed::Vector<double>       &f);
 
     /** Active pairs of the last add_forces() (replicated on all ranks). */
     const std::vector<ContactPair> &
@@ -277,10 +277,10 @@ namespace WheelRail
     {
       Point<dim>     centre;
       Tensor<1, dim> normal; ///< unit normal at xi = eta = 0
-      double         radius    = 0;
-      double         sin_angle = 0;
-      bool           usable    = false; ///< nearly flat and not degenerate
-      unsigned long  evaluation = 0;    ///< add_forces() call it was computed in
+      double         radius     = 0;
+      double         sin_angle  = 0;
+      bool           usable     = false; ///< nearly flat and not degenerate
+      unsigned long  evaluation = 0;     ///< add_forces() call it was computed in
     };
     struct Pass
     {
@@ -302,17 +302,19 @@ namespace WheelRail
     };
 
     void
-    collect_pass(const DoFHandler<dim> &  dof_handler,
+    collect_pass(const DoFHandler<dim>   &dof_handler,
                  const types::boundary_id slave_id,
                  const types::boundary_id master_id,
-                 Pass &                   pass);
+                 Pass                    &pass);
     unsigned int
     node_index(const types::global_dof_index dof, const Point<dim> &X);
     /** Every rank's @p send, concatenated in rank order, into @p recv on
      *  every rank (MPI type @p type of T). */
     template <typename T>
     void
-    all_gather_concatenated(const std::vector<T> &send, const MPI_Datatype type, std::vector<T> &recv);
+    all_gather_concatenated(const std::vector<T> &send,
+                            const MPI_Datatype    type,
+                            std::vector<T>       &recv);
     void
     search(const LinearAlgebra::distributed::Vector<double> &u);
     /** The clearances and motion allowances of this rank's contact nodes
@@ -332,7 +334,7 @@ namespace WheelRail
     bool
     approach_bound_exceeded(const LinearAlgebra::distributed::Vector<double> &u,
                             const bool                                        advance,
-                            Clock::time_point &                               clock);
+                            Clock::time_point                                &clock);
     /** At the first evaluation after setup(): stop the run when a slave
      *  penetrates its master face deeper than the faceting of the surfaces
      *  explains (contact_trigger.cc). */
@@ -364,9 +366,9 @@ namespace WheelRail
      *  fixed from one search to the next. */
     struct GatherPlan
     {
-      std::vector<unsigned int> local_dof; ///< this rank's nodes: first local DoF, ascending
-      std::vector<Point<dim>>   X;         ///< their reference positions
-      std::vector<unsigned int> nodes;     ///< all ranks' nodes in the order they arrive
+      std::vector<unsigned int> local_dof;      ///< this rank's nodes: first local DoF, ascending
+      std::vector<Point<dim>>   X;              ///< their reference positions
+      std::vector<unsigned int> nodes;          ///< all ranks' nodes in the order they arrive
       std::vector<int>          counts, displs; ///< per rank, in doubles
     };
     void
@@ -390,8 +392,8 @@ namespace WheelRail
     void
     accumulate(const Pass &pass, const bool advance);
 
-    const ContactParameters &prm;
-    MPI_Comm                 mpi_communicator;
+    const ContactParameters     &prm;
+    MPI_Comm                     mpi_communicator;
     std::unique_ptr<FrictionLaw> law;
     double                       bulk_modulus;
     double                       reference_length = 0; ///< h_ref of the 'area' penalty [m]
@@ -400,15 +402,15 @@ namespace WheelRail
     // contact nodes: slaves and face corners of all passes (replicated)
     std::vector<types::global_dof_index> node_dof;
     std::vector<Point<dim>>              node_X;
-    std::vector<Point<dim>>              node_x;       ///< current positions
-    std::vector<Point<dim>>              node_x_search; ///< at the last search
-    std::vector<Tensor<1, dim>>          node_normal; ///< averaged master normals
+    std::vector<Point<dim>>              node_x;            ///< current positions
+    std::vector<Point<dim>>              node_x_search;     ///< at the last search
+    std::vector<Tensor<1, dim>>          node_normal;       ///< averaged master normals
     std::vector<unsigned long>           normal_evaluation; ///< when node_normal[n] was computed
-    std::vector<unsigned int>            normal_offsets; ///< CSR: node -> NormalEntry
+    std::vector<unsigned int>            normal_offsets;    ///< CSR: node -> NormalEntry
     std::vector<NormalEntry>             normal_entries;
     unsigned long                        evaluation = 0; ///< add_forces() calls
-    std::vector<double>                  node_area;   ///< master tributary area (first pass)
-    std::vector<unsigned int>            active_nodes;  ///< gathered every step
+    std::vector<double>                  node_area;      ///< master tributary area (first pass)
+    std::vector<unsigned int>            active_nodes;   ///< gathered every step
     GatherPlan                           all_gather, active_gather;
     std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
 
@@ -422,23 +424,23 @@ namespace WheelRail
        *  (2 p + 1) of pass p; the largest double where it has no role. */
       double e[4];
     };
-    std::vector<TriggerNode> trigger_nodes; ///< ascending local DoFs
+    std::vector<TriggerNode> trigger_nodes;             ///< ascending local DoFs
     bool                     step_motion_known = false; ///< TriggerNode::dx is of the last step
     bool                     overlap_checked   = false; ///< check_initial_overlap() done
     unsigned int             approach_searches = 0;
-    double                   new_contact_depth = 0; ///< this rank's block, see deepest_new_contact()
+    double new_contact_depth = 0; ///< this rank's block, see deepest_new_contact()
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
     std::vector<double>           exchange_gaps;   ///< (in contact, gap) per candidate
     // workspaces of gather_positions() and exchange_states(), kept so that a
     // step allocates nothing
-    std::vector<double> gather_send, gather_recv;
-    std::vector<int>    exchange_counts, exchange_displs;
+    std::vector<double>      gather_send, gather_recv;
+    std::vector<int>         exchange_counts, exchange_displs;
     std::vector<Pass>        passes;
     std::vector<ContactPair> pairs;
     ContactSummary           totals;
-    double                   dissipation  = 0;
-    double                   damping_loss = 0;
+    double                   dissipation        = 0;
+    double                   damping_loss       = 0;
     unsigned long            steps_since_search = 0;
     bool                     need_search        = true;
     unsigned int             searches           = 0;

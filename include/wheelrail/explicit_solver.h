@@ -38,11 +38,11 @@ namespace WheelRail
   /** Energies of the whole model at one instant [J]. */
   struct Energies
   {
-    double        time = 0; ///< t_n, the instant of these values [s]
-    unsigned long step = 0; ///< n
-    double kinetic   = 0; ///< with the mid-step velocity v_n
-    double internal  = 0; ///< St. Venant-Kirchhoff strain energy
-    double hourglass = 0; ///< energy stored in the hourglass springs
+    double        time      = 0; ///< t_n, the instant of these values [s]
+    unsigned long step      = 0; ///< n
+    double        kinetic   = 0; ///< with the mid-step velocity v_n
+    double        internal  = 0; ///< St. Venant-Kirchhoff strain energy
+    double        hourglass = 0; ///< energy stored in the hourglass springs
     /** Hourglass-mode energy with the reference coefficient QM = 0.1,
      *  also when the control is off: shows spurious modes. */
     double hourglass_reference = 0;
@@ -62,22 +62,22 @@ namespace WheelRail
   /** Wall seconds of this rank spent in the parts of the explicit steps. */
   struct StepTimes
   {
-    double elements      = 0; ///< element kernel: gather, forces, scatter
-    double contact       = 0; ///< search, projection, friction, contact forces
-    double update        = 0; ///< central-difference update, constraints, axle
-    double communication = 0; ///< ghost exchange and force compression
-    double energies      = 0; ///< energies at statistics steps
-    unsigned long steps  = 0; ///< steps timed
+    double        elements      = 0; ///< element kernel: gather, forces, scatter
+    double        contact       = 0; ///< search, projection, friction, contact forces
+    double        update        = 0; ///< central-difference update, constraints, axle
+    double        communication = 0; ///< ghost exchange and force compression
+    double        energies      = 0; ///< energies at statistics steps
+    unsigned long steps         = 0; ///< steps timed
   };
 
   /** Mesh size and quality figures over all cells (all ranks). */
   struct MeshQuality
   {
-    double min_edge             = 0; ///< shortest edge [m]
-    double min_longest_edge     = 0; ///< h_min: smallest cell size [m]
-    double min_length           = 0; ///< smallest L_e = V/A_max [m]
-    double min_scaled_jacobian  = 0; ///< at the corners, 1 for a cube [-]
-    double max_aspect_ratio     = 0; ///< longest / shortest edge [-]
+    double min_edge            = 0; ///< shortest edge [m]
+    double min_longest_edge    = 0; ///< h_min: smallest cell size [m]
+    double min_length          = 0; ///< smallest L_e = V/A_max [m]
+    double min_scaled_jacobian = 0; ///< at the corners, 1 for a cube [-]
+    double max_aspect_ratio    = 0; ///< longest / shortest edge [-]
   };
 
   /** Per-cell stress measures computed from the current displacement. */
@@ -98,7 +98,7 @@ namespace WheelRail
     /** Lanes of a cell batch; the kernel vectorises across them. */
     static constexpr unsigned int n_lanes = 8;
 
-    ExplicitSolver(const Parameters &                         parameters,
+    ExplicitSolver(const Parameters                          &parameters,
                    parallel::distributed::Triangulation<dim> &triangulation);
 
     /** Distribute DoFs, build constraints, element data, mass and loads. */
@@ -131,8 +131,8 @@ namespace WheelRail
                      const types::material_id material = numbers::invalid_material_id);
     /** Set the initial velocity v_0 (the first step is a half step). */
     void
-    set_velocity(const std::function<Tensor<1, dim>(const Point<dim> &,
-                                                    const types::material_id)> &v_of_X);
+    set_velocity(
+      const std::function<Tensor<1, dim>(const Point<dim> &, const types::material_id)> &v_of_X);
 
     /** Let @p contact add its forces in every step (nullptr: none). */
     void
@@ -173,7 +173,7 @@ namespace WheelRail
      * @p constraints, one cell at a time.
      */
     void
-    assemble_stiffness(TrilinosWrappers::SparseMatrix &  matrix,
+    assemble_stiffness(TrilinosWrappers::SparseMatrix  &matrix,
                        const AffineConstraints<double> &constraints) const;
 
     /**
@@ -323,7 +323,7 @@ namespace WheelRail
     double
     assemble_forces(const VectorType &u,
                     const VectorType *v,
-                    VectorType &      f,
+                    VectorType       &f,
                     const bool        with_contact,
                     const bool        advance,
                     const bool        f_is_zero = false);
@@ -344,12 +344,12 @@ namespace WheelRail
     void
     strain_energies(Energies &e) const;
 
-    const Parameters &                         prm;
-    parallel::distributed::Triangulation<dim> &triangulation;
-    MPI_Comm                                   mpi_communicator;
-    FESystem<dim>                              fe;
-    DoFHandler<dim>                            dof_handler;
-    AffineConstraints<double>                  hanging_constraints;
+    const Parameters                                  &prm;
+    parallel::distributed::Triangulation<dim>         &triangulation;
+    MPI_Comm                                           mpi_communicator;
+    FESystem<dim>                                      fe;
+    DoFHandler<dim>                                    dof_handler;
+    AffineConstraints<double>                          hanging_constraints;
     std::shared_ptr<const Utilities::MPI::Partitioner> vector_partitioner;
 
     /** Hanging-node constraints in local indices, flat (CSR): line k
@@ -362,39 +362,39 @@ namespace WheelRail
     std::vector<double>       constraint_weights;
 
     // Element data, batches of n_lanes cells, structure of arrays.
-    unsigned int                   n_cells   = 0;
-    unsigned int                   n_batches = 0;
-    AlignedVector<double>          batch_data;  ///< [batch][field][lane]
-    std::vector<unsigned int>      batch_nodes; ///< [batch][vertex][lane]
-    std::vector<unsigned int>      batch_cell_index; ///< active cell index
+    unsigned int              n_cells   = 0;
+    unsigned int              n_batches = 0;
+    AlignedVector<double>     batch_data;       ///< [batch][field][lane]
+    std::vector<unsigned int> batch_nodes;      ///< [batch][vertex][lane]
+    std::vector<unsigned int> batch_cell_index; ///< active cell index
     /** Batches whose 8 cells are the 8 children of one parent, in child
      *  order (lane l = child l): their 27 distinct nodes, the x-DoF of each
      *  in the parent's 3x3x3 lexicographic grid ([family][27]). */
     std::vector<unsigned int> family_nodes;
     /** Index into family_nodes / 27 of each batch, or invalid_unsigned_int. */
-    std::vector<unsigned int> batch_family;
+    std::vector<unsigned int>       batch_family;
     std::vector<types::material_id> batch_material;
-    std::vector<double>            batch_kappa_ref; ///< hourglass stiffness with QM = 0.1
-    double                         lame_lambda = 0; ///< of the one material [Pa]
-    double                         lame_mu     = 0;
+    std::vector<double>             batch_kappa_ref; ///< hourglass stiffness with QM = 0.1
+    double                          lame_lambda = 0; ///< of the one material [Pa]
+    double                          lame_mu     = 0;
 
     // Nodal data (local indices of the ghosted vectors).
-    std::vector<Point<dim>> node_points; ///< reference position of each DoF
-    std::vector<bool>       on_boundary;
+    std::vector<Point<dim>>         node_points; ///< reference position of each DoF
+    std::vector<bool>               on_boundary;
     std::vector<types::material_id> node_material;
     std::vector<unsigned char>      node_component; ///< 0, 1, 2 = x, y, z
-    std::vector<unsigned int> bore_dofs;
-    VectorType              mass;     ///< condensed lumped mass, per DoF
-    VectorType              inv_mass; ///< 0 on constrained DoFs
-    VectorType              f_ext;    ///< gravity, condensed
-    VectorType              u0;       ///< displacement at the start
+    std::vector<unsigned int>       bore_dofs;
+    VectorType                      mass;     ///< condensed lumped mass, per DoF
+    VectorType                      inv_mass; ///< 0 on constrained DoFs
+    VectorType                      f_ext;    ///< gravity, condensed
+    VectorType                      u0;       ///< displacement at the start
 
     /** Prescribed DoFs (owned): index and function of (X, t) -> u_d. */
     struct PrescribedDof
     {
       unsigned int index;
       unsigned int component;
-      unsigned int kind; ///< 0 fixed, 1 velocity function, 2 spinning axle, 3 rigid axle
+      unsigned int kind;       ///< 0 fixed, 1 velocity function, 2 spinning axle, 3 rigid axle
       double       u_prev = 0; ///< u at the start of the step
       double       v_prev = 0; ///< v at the previous half step
       /** f_ext - f at this DoF (and, for the x-DoF of a rigid-axle bore
@@ -402,26 +402,26 @@ namespace WheelRail
        *  the update clears f. */
       double net_force[3] = {0, 0, 0};
     };
-    std::vector<PrescribedDof>            prescribed;
-    std::unique_ptr<Function<dim>>        prescribed_velocity;
+    std::vector<PrescribedDof>     prescribed;
+    std::unique_ptr<Function<dim>> prescribed_velocity;
     /** Applied-force DoFs: local index, component, area fraction. */
     std::vector<std::tuple<unsigned int, unsigned int, double>> applied;
     std::unique_ptr<Function<dim>>                              applied_force;
-    PenaltyContact *                                            contact = nullptr;
-    Wheelset *                                                  wheelset = nullptr;
+    PenaltyContact                                             *contact  = nullptr;
+    Wheelset                                                   *wheelset = nullptr;
 
     VectorType u, v, f, v_old;
     /** f is zero (the update of the last step cleared it behind itself:
      *  the next step's assembly need not). */
-    bool f_cleared = false;
-    double     t          = 0;
-    double     dt         = 0;
-    double     stable_dt  = 0;
-    MeshQuality quality;
-    unsigned long n_steps = 0;
-    double     damping_dissipation = 0;
-    double     boundary_work       = 0;
-    StepTimes  times;
+    bool          f_cleared = false;
+    double        t         = 0;
+    double        dt        = 0;
+    double        stable_dt = 0;
+    MeshQuality   quality;
+    unsigned long n_steps             = 0;
+    double        damping_dissipation = 0;
+    double        boundary_work       = 0;
+    StepTimes     times;
   };
 } // namespace WheelRail
 

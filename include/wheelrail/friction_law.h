@@ -109,8 +109,8 @@ namespace WheelRail
   return_map(const dealii::Tensor<1, 3> &trial,
              const double                limit,
              const double                tangential_stiffness,
-             bool &                      slipping,
-             double &                    dissipated)
+             bool                       &slipping,
+             double                     &dissipated)
   {
     const double norm = trial.norm();
     if (norm <= limit)

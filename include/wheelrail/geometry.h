@@ -19,16 +19,16 @@ namespace WheelRail
      */
     namespace BoundaryIds
     {
-      constexpr types::boundary_id wheel_tread = 1;
-      constexpr types::boundary_id wheel_bore  = 2;
-      constexpr types::boundary_id wheel_side  = 3;
-      constexpr types::boundary_id rail_top    = 10;
-      constexpr types::boundary_id rail_bottom = 11;
-      constexpr types::boundary_id rail_end    = 12;
-      constexpr types::boundary_id rail_side   = 13;
-      constexpr types::boundary_id bar_side    = 20;
-      constexpr types::boundary_id bar_start   = 21; ///< x = 0
-      constexpr types::boundary_id bar_end     = 22; ///< x = L
+      constexpr types::boundary_id wheel_tread  = 1;
+      constexpr types::boundary_id wheel_bore   = 2;
+      constexpr types::boundary_id wheel_side   = 3;
+      constexpr types::boundary_id rail_top     = 10;
+      constexpr types::boundary_id rail_bottom  = 11;
+      constexpr types::boundary_id rail_end     = 12;
+      constexpr types::boundary_id rail_side    = 13;
+      constexpr types::boundary_id bar_side     = 20;
+      constexpr types::boundary_id bar_start    = 21; ///< x = 0
+      constexpr types::boundary_id bar_end      = 22; ///< x = L
       constexpr types::boundary_id block_bottom = 30;
       constexpr types::boundary_id block_top    = 31;
       constexpr types::boundary_id block_side   = 32;
@@ -52,7 +52,7 @@ namespace WheelRail
     {
       constexpr types::manifold_id wheel = 1; ///< cylinder about the axle
       constexpr types::manifold_id rail  = 2; ///< box mapped to the arc top
-    } // namespace ManifoldIds
+    }                                         // namespace ManifoldIds
 
     /**
      * Build the coarse mesh of @p geometry_type ("wheel and rail", "bar" or
@@ -60,8 +60,8 @@ namespace WheelRail
      * attach manifolds and refine locally as GeometryParameters says.
      */
     void
-    build(const GeometryParameters &                 parameters,
-          const std::string &                        geometry_type,
+    build(const GeometryParameters                  &parameters,
+          const std::string                         &geometry_type,
           parallel::distributed::Triangulation<dim> &triangulation);
 
     /** Undeformed wheel centre. */
@@ -85,14 +85,13 @@ namespace WheelRail
      * Collective over the triangulation's communicator.
      */
     ZoneCells
-    zone_cells(const GeometryParameters &                       parameters,
+    zone_cells(const GeometryParameters                        &parameters,
                const types::material_id                         material,
                const parallel::distributed::Triangulation<dim> &triangulation);
 
     /** Exact volume of the body with material id @p material (analytic). */
     double
-    exact_volume(const GeometryParameters &parameters,
-                 const types::material_id  material);
+    exact_volume(const GeometryParameters &parameters, const types::material_id material);
   } // namespace Geometry
 } // namespace WheelRail
 

@@ -46,25 +46,25 @@ namespace WheelRail
       return (E / k2 - K) / (K - E);
     };
     // B/A grows monotonically from 1 (e -> 0) to infinity (e -> 1): bisect
-    double lo = 1e-8, hi = 1 - 1e-15;
+    double       lo = 1e-8, hi = 1 - 1e-15;
     const double target = B / A;
     if (target - 1 < 1e-12)
       lo = hi = 1e-8;
     for (unsigned int it = 0; it < 200 && hi - lo > 1e-15; ++it)
       {
-        const double mid = 0.5 * (lo + hi);
+        const double mid                = 0.5 * (lo + hi);
         (ratio(mid) < target ? lo : hi) = mid;
       }
-    const double e = 0.5 * (lo + hi);
-    const double K = ellint_1(e), E = ellint_2(e);
+    const double  e = 0.5 * (lo + hi);
+    const double  K = ellint_1(e), E = ellint_2(e);
     HertzSolution s;
     // for e -> 0, (K - E)/e^2 -> pi/4
     const double KE_e2 = e > 1e-6 ? (K - E) / (e * e) : M_PI / 4;
-    s.a             = std::cbrt(3 * F * KE_e2 / (2 * M_PI * E_star * A));
-    s.b             = s.a * std::sqrt(1 - e * e);
-    s.p0            = 3 * F / (2 * M_PI * s.a * s.b);
-    s.mean_pressure = F / (M_PI * s.a * s.b);
-    s.approach      = s.p0 * s.b * K / E_star;
+    s.a                = std::cbrt(3 * F * KE_e2 / (2 * M_PI * E_star * A));
+    s.b                = s.a * std::sqrt(1 - e * e);
+    s.p0               = 3 * F / (2 * M_PI * s.a * s.b);
+    s.mean_pressure    = F / (M_PI * s.a * s.b);
+    s.approach         = s.p0 * s.b * K / E_star;
     return s;
   }
 } // namespace WheelRail

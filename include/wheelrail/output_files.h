@@ -70,8 +70,8 @@ namespace WheelRail
    */
   std::string
   write_vtu_with_pvtu_record(const dealii::DataOutInterface<3, 3> &data_out,
-                             const std::string &                   directory,
-                             const std::string &                   base,
+                             const std::string                    &directory,
+                             const std::string                    &base,
                              const unsigned int                    counter,
                              const unsigned int                    n_digits,
                              const MPI_Comm                        comm);

@@ -53,8 +53,8 @@ namespace WheelRail
       void
       read(const std::string &filename, std::vector<std::string> &chain, unsigned int depth);
 
-      std::string                                      top;
-      std::string                                      expanded;
+      std::string                                       top;
+      std::string                                       expanded;
       std::vector<std::pair<std::string, unsigned int>> origin; // of each expanded line
     };
 

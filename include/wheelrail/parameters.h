@@ -11,11 +11,10 @@
 #ifndef wheelrail_parameters_h
 #define wheelrail_parameters_h
 
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
-
-#include <deal.II/base/function_parser.h>
 
 #include <map>
 #include <memory>
@@ -42,8 +41,10 @@ namespace WheelRail
     /** Parse, build the mesh, print the summary and stop. */
     bool dry_run;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Wheel, rail and mesh refinement (SPEC section 1). */
@@ -74,11 +75,11 @@ namespace WheelRail
     /** Coarse cells that refine onto h_min in every direction over the zone. */
     bool align_zone;
     // bar (verification geometry)
-    double              bar_length;
-    double              bar_width;
-    double              bar_height;
+    double                    bar_length;
+    double                    bar_width;
+    double                    bar_height;
     std::vector<unsigned int> bar_cells;
-    double              bar_distortion;
+    double                    bar_distortion;
     // block on plate (contact verification geometry)
     Tensor<1, 3>              plate_size;
     std::vector<unsigned int> plate_cells;
@@ -94,9 +95,12 @@ namespace WheelRail
       return wheel_radius + initial_gap;
     }
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
-    void        check() const;
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+    void
+    check() const;
   };
 
   /** Linear elastic material, the same for wheel and rail (SPEC 2). */
@@ -109,8 +113,7 @@ namespace WheelRail
     double
     lambda() const
     {
-      return youngs_modulus * poisson_ratio /
-             ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+      return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
     }
     double
     mu() const
@@ -124,24 +127,28 @@ namespace WheelRail
     double
     bar_wave_speed() const;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Element, damping and central-difference integration (SPEC 2). */
   struct SolverParameters
   {
-    double      end_time;
-    double      time_step; ///< 0 = automatic
-    double      courant_factor;
-    double      hourglass_coefficient;
-    std::string damping_model; ///< "none", "stiffness", "Rayleigh"
-    double      stiffness_damping_coefficient;
-    double      rayleigh_beta;
+    double       end_time;
+    double       time_step; ///< 0 = automatic
+    double       courant_factor;
+    double       hourglass_coefficient;
+    std::string  damping_model; ///< "none", "stiffness", "Rayleigh"
+    double       stiffness_damping_coefficient;
+    double       rayleigh_beta;
     Tensor<1, 3> gravity;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Dirichlet conditions and prescribed motions. */
@@ -165,8 +172,10 @@ namespace WheelRail
     std::string applied_force_expression;
     std::string applied_force_constants;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Penalty node-to-segment contact and friction (SPEC 4). */
@@ -190,8 +199,10 @@ namespace WheelRail
     double             dynamic_coefficient;
     double             decay;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Axle, primary suspension, sprung mass and driving torque (SPEC 3). */
@@ -207,8 +218,10 @@ namespace WheelRail
     double torque_ramp_time;
     bool   static_start;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** The implicit static contact solve (SPEC 5.2). */
@@ -222,8 +235,10 @@ namespace WheelRail
     bool         inexact_newton; ///< CG tolerance from the Newton residual
     std::string  amg_null_space; ///< "translations" or "rigid body modes"
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Initial velocity fields. */
@@ -234,28 +249,32 @@ namespace WheelRail
     std::string  velocity_expression;    ///< "vx; vy; vz" in (x,y,z)
     std::string  velocity_constants;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Screen reports, statistics file, VTU snapshots, probes. */
   struct OutputParameters
   {
-    unsigned int report_interval;
-    unsigned int statistics_interval;
-    unsigned int vtu_interval;
-    std::string  vtu_compression; ///< "fast", "best" or "none"
-    Point<3>     probe_point;
-    unsigned int probe_component;
-    unsigned int timing_warmup_steps;
-    double       divergence_limit; ///< largest relative energy balance error
-    unsigned int checkpoint_interval; ///< steps between checkpoints, 0 = none
-    double       checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
-    unsigned long stop_after_step;    ///< stop (with a checkpoint) after this step, 0 = never
-    bool         resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
+    unsigned int  report_interval;
+    unsigned int  statistics_interval;
+    unsigned int  vtu_interval;
+    std::string   vtu_compression; ///< "fast", "best" or "none"
+    Point<3>      probe_point;
+    unsigned int  probe_component;
+    unsigned int  timing_warmup_steps;
+    double        divergence_limit;    ///< largest relative energy balance error
+    unsigned int  checkpoint_interval; ///< steps between checkpoints, 0 = none
+    double        checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
+    unsigned long stop_after_step;     ///< stop (with a checkpoint) after this step, 0 = never
+    bool          resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /** Checks against analytic solutions, used by the test suite. */
@@ -271,8 +290,10 @@ namespace WheelRail
     bool         round_off_sensitive; ///< test mode prints robust values only
     bool         bar_clamped;
 
-    static void declare_parameters(ParameterHandler &prm);
-    void        parse_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
   };
 
   /**
@@ -303,9 +324,11 @@ namespace WheelRail
     OutputParameters       output;
     VerificationParameters verification;
 
-    static void declare_parameters(ParameterHandler &prm);
+    static void
+    declare_parameters(ParameterHandler &prm);
     /** Read @p filename into @p prm and fill all structs; throws on bad input. */
-    void parse(ParameterHandler &prm, const std::string &filename);
+    void
+    parse(ParameterHandler &prm, const std::string &filename);
   };
 } // namespace WheelRail
 

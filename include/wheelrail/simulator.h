@@ -97,7 +97,7 @@ namespace WheelRail
      *  penetration seen in the run [m]. */
     std::string
     divergence_message(const unsigned long n,
-                       const Energies &    e,
+                       const Energies     &e,
                        const double        velocity_spread,
                        const double        deepest_penetration) const;
     /** Time split, ns per element-step, the spread of the step times
@@ -105,8 +105,10 @@ namespace WheelRail
      *  memory and the projected full paper run: on the screen and in
      *  timing.csv. */
     void
-    report_timing(const double wall_seconds, const double output_seconds,
-                  const unsigned long n_steps, std::vector<double> &step_seconds) const;
+    report_timing(const double         wall_seconds,
+                  const double         output_seconds,
+                  const unsigned long  n_steps,
+                  std::vector<double> &step_seconds) const;
     void
     add_statistics_row(const Energies &e);
     void
@@ -120,7 +122,7 @@ namespace WheelRail
 
     /** Where the implicit solver's iterations go: the screen of rank 0,
      *  or nowhere in test mode and on the other ranks. */
-    std::ostream &
+    std::ostream                    &
     solver_log();
     std::ostringstream silent_log;
 
@@ -129,7 +131,7 @@ namespace WheelRail
     void
     write_file(const std::string &name, const std::string &content) const;
 
-    const Parameters &                        parameters;
+    const Parameters &parameters;
     /** The parameter file as parsed: for OUTDIR/parameters.prm (with the
      *  documentation) and for the checkpoints (ShortPRM). */
     const std::string                         parameter_file;
@@ -142,22 +144,22 @@ namespace WheelRail
     std::unique_ptr<Wheelset>                 wheelset;
     std::string                               output_directory;
     /** Held by rank 0 from the start to the end of the run. */
-    std::unique_ptr<DirectoryLock>            lock;
+    std::unique_ptr<DirectoryLock> lock;
 
-    TableHandler statistics;
+    TableHandler                                statistics;
     std::vector<std::pair<double, std::string>> vtu_records;
     unsigned int                                vtu_counter = 0;
 
     /** A node whose displacement and velocity are recorded every step. */
     struct Probe
     {
-      std::string         file;      ///< output file name
-      Point<dim>          target;    ///< the node nearest to it is recorded
+      std::string         file;   ///< output file name
+      Point<dim>          target; ///< the node nearest to it is recorded
       types::material_id  material = numbers::invalid_material_id; ///< search only this body
-      unsigned int        owner = 0; ///< rank owning the node
-      unsigned int        dof   = 0; ///< local index of its x-DoF on the owner
-      Point<dim>          location;  ///< reference position of the node
-      std::vector<double> history;   ///< t, u_x,u_y,u_z, v_x,v_y,v_z per step
+      unsigned int        owner    = 0;                            ///< rank owning the node
+      unsigned int        dof      = 0; ///< local index of its x-DoF on the owner
+      Point<dim>          location;     ///< reference position of the node
+      std::vector<double> history;      ///< t, u_x,u_y,u_z, v_x,v_y,v_z per step
     };
     /** probes[0]: Output/Probe point; with a wheelset also the wheel-tread
      *  node that passes O. */
@@ -166,7 +168,7 @@ namespace WheelRail
     /** Contact-patch snapshots at the instants of SPEC 5.5: when the patch
      *  centre passes x = -V dt_s, 0, +V dt_s (dt_s = 5.7 us). */
     void
-    write_patch_snapshots();
+                 write_patch_snapshots();
     double       previous_patch_centre = -std::numeric_limits<double>::max();
     unsigned int next_snapshot         = 0;
     /** Force-weighted mean x of the contact nodes (NaN without contact). */
@@ -181,13 +183,13 @@ namespace WheelRail
     TrailingSlip
     trailing_micro_slip() const;
 
-    Energies     initial_energies;
-    bool         have_initial_energies = false;
-    double       max_balance_error     = 0;
-    double       hourglass_time_integral = 0;
-    double       hourglass_ref_time_integral = 0;
-    double       internal_time_integral = 0;
-    double       max_hourglass_ratio_actual = 0;
+    Energies initial_energies;
+    bool     have_initial_energies       = false;
+    double   max_balance_error           = 0;
+    double   hourglass_time_integral     = 0;
+    double   hourglass_ref_time_integral = 0;
+    double   internal_time_integral      = 0;
+    double   max_hourglass_ratio_actual  = 0;
 
     /** Time series for the contact checks (block on plate). */
     struct Sample

@@ -13,11 +13,11 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <Epetra_MultiVector.h>
-
 #include <wheelrail/contact.h>
 #include <wheelrail/explicit_solver.h>
 #include <wheelrail/parameters.h>
+
+#include <Epetra_MultiVector.h>
 
 namespace WheelRail
 {
@@ -51,9 +51,9 @@ namespace WheelRail
      *  expanded into their masters, fixed DoFs dropped; each rank keeps the
      *  entries on its owned DoFs. */
     void
-    set_contact_pairs(const std::vector<ContactPair> &  pairs,
+    set_contact_pairs(const std::vector<ContactPair>  &pairs,
                       const AffineConstraints<double> &constraints,
-                      const IndexSet &                 owned);
+                      const IndexSet                  &owned);
 
     void
     vmult(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) const;
@@ -61,10 +61,10 @@ namespace WheelRail
   private:
     const TrilinosWrappers::SparseMatrix &K;
     MPI_Comm                              comm;
-    std::vector<double>                   stiffness;    ///< k_p [N/m]
-    std::vector<unsigned int>             offsets;      ///< pair p: entries [offsets[p], offsets[p+1])
-    std::vector<unsigned int>             local_index;  ///< owned DoF, local numbering
-    std::vector<double>                   coefficient;  ///< d g_p / d u_dof
+    std::vector<double>                   stiffness; ///< k_p [N/m]
+    std::vector<unsigned int>             offsets;   ///< pair p: entries [offsets[p], offsets[p+1])
+    std::vector<unsigned int>             local_index; ///< owned DoF, local numbering
+    std::vector<double>                   coefficient; ///< d g_p / d u_dof
     mutable std::vector<double>           gaps;
   };
 
@@ -82,8 +82,8 @@ namespace WheelRail
   {
   public:
     StaticContactSolver(const Parameters &parameters,
-                        ExplicitSolver &  solver,
-                        PenaltyContact &  contact,
+                        ExplicitSolver   &solver,
+                        PenaltyContact   &contact,
                         MPI_Comm          comm);
 
     StaticResult
@@ -98,15 +98,16 @@ namespace WheelRail
      *  coordinate axes) on the locally owned rows of @p matrix, for the
      *  AMG's near null space. */
     static Epetra_MultiVector
-    rigid_body_modes(const DoFHandler<dim> &dof_handler, const TrilinosWrappers::SparseMatrix &matrix);
+    rigid_body_modes(const DoFHandler<dim>                &dof_handler,
+                     const TrilinosWrappers::SparseMatrix &matrix);
 
-    const Parameters &parameters;
-    ExplicitSolver &  solver;
-    PenaltyContact &  contact;
-    MPI_Comm          mpi_communicator;
-    AffineConstraints<double> constraints; ///< hanging + homogeneous Dirichlet
-    IndexSet                  bore_dofs;   ///< locally owned bore DoFs
-    VectorType                u;           ///< current iterate
+    const Parameters                 &parameters;
+    ExplicitSolver                   &solver;
+    PenaltyContact                   &contact;
+    MPI_Comm                          mpi_communicator;
+    AffineConstraints<double>         constraints;      ///< hanging + homogeneous Dirichlet
+    IndexSet                          bore_dofs;        ///< locally owned bore DoFs
+    VectorType                        u;                ///< current iterate
     TrilinosWrappers::SparseMatrix    stiffness_matrix; ///< K, with the constraints condensed
     TrilinosWrappers::PreconditionAMG amg;              ///< of K, built once
     StaticTangent                     tangent;

@@ -29,8 +29,9 @@ namespace WheelRail
   class Wheelset
   {
   public:
-    Wheelset(const WheelsetParameters &parameters, const SolverParameters &solver,
-             const Point<dim> &axle_centre);
+    Wheelset(const WheelsetParameters &parameters,
+             const SolverParameters   &solver,
+             const Point<dim>         &axle_centre);
 
     /** Lumped mass and polar inertia of the bore nodes and of the whole FE
      *  wheel (all ranks). */
@@ -85,8 +86,11 @@ namespace WheelRail
      * and their moment about the axle (y component).
      */
     void
-    advance(const Tensor<1, dim> &force, const double moment, const double h, const double dt,
-            const double t);
+    advance(const Tensor<1, dim> &force,
+            const double          moment,
+            const double          h,
+            const double          dt,
+            const double          t);
 
     /** Displacement of the bore node with reference position X. */
     Tensor<1, dim>
@@ -120,25 +124,29 @@ namespace WheelRail
     nominal_torque() const;
 
     /** Energies of the rigid parts [J]. */
-    double kinetic() const;        ///< axle (without bore nodes), sprung mass
-    double spring_energy() const;  ///< suspension spring beyond the static preload
-    double external_work() const;  ///< gravity on axle and sprung mass, torque
-    double damper_dissipation() const
+    double
+    kinetic() const; ///< axle (without bore nodes), sprung mass
+    double
+    spring_energy() const; ///< suspension spring beyond the static preload
+    double
+    external_work() const; ///< gravity on axle and sprung mass, torque
+    double
+    damper_dissipation() const
     {
       return damper_loss;
     }
 
   private:
     const WheelsetParameters &prm;
-    const double              g;       ///< |gravity|
-    const Point<dim>          centre;  ///< reference axle centre
-    double m_axle = 0, m_bore = 0, i_bore = 0, m_wheel = 0, i_wheel = 0;
-    bool   active = false;
-    Tensor<1, dim> displacement, velocity; ///< axle, x and z used
-    double         theta = 0, omega = 0;
-    double         d_axle_static = 0;       ///< axle z displacement at the static state
-    double         d_c = 0, v_c = 0;        ///< sprung mass, from the static state
-    double         work = 0, damper_loss = 0, radius = 0;
+    const double              g;      ///< |gravity|
+    const Point<dim>          centre; ///< reference axle centre
+    double                    m_axle = 0, m_bore = 0, i_bore = 0, m_wheel = 0, i_wheel = 0;
+    bool                      active = false;
+    Tensor<1, dim>            displacement, velocity; ///< axle, x and z used
+    double                    theta = 0, omega = 0;
+    double                    d_axle_static = 0; ///< axle z displacement at the static state
+    double                    d_c = 0, v_c = 0;  ///< sprung mass, from the static state
+    double                    work = 0, damper_loss = 0, radius = 0;
   };
 } // namespace WheelRail
 

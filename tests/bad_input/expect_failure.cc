@@ -4,11 +4,12 @@
 // the build tree) and named bare, as a user in the case's directory types it:
 // `wheelrail case.prm`. Files beside it named NAME.*.inc (parameter files that
 // NAME.prm includes) are copied with it.
+#include <sys/wait.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <string>
-#include <sys/wait.h>
 
 int
 main(int argc, char **argv)
@@ -23,12 +24,12 @@ main(int argc, char **argv)
     {
       const std::string file = entry.path().filename().string();
       if (file.compare(0, stem.size(), stem) == 0 && entry.path().extension() == ".inc")
-        std::filesystem::copy_file(entry.path(), file,
+        std::filesystem::copy_file(entry.path(),
+                                   file,
                                    std::filesystem::copy_options::overwrite_existing);
     }
-  const std::string command =
-    std::string(WHEELRAIL_EXECUTABLE) + " '" + name.string() + "' 2>&1";
-  FILE *pipe = popen(command.c_str(), "r");
+  const std::string command = std::string(WHEELRAIL_EXECUTABLE) + " '" + name.string() + "' 2>&1";
+  FILE             *pipe    = popen(command.c_str(), "r");
   if (!pipe)
     return 2;
   char buffer[4096];
