@@ -44,10 +44,18 @@ namespace WheelRail
     constexpr std::uint64_t trailer_size = 24;
 
     /** Appends values to a binary stream and keeps the CRC-32 of all
-     *  bytes written; finish() appends the trailer. */
+     *  bytes written; finish() appends the trailer.
+     *
+     *  Writer and Reader have the same member functions (pod, vector,
+     *  string, array), so that an object's checkpoint is one
+     *  `template <class Archive> void serialize(Archive &ar)` that lists
+     *  its fields once, for both directions; `Archive::is_loading` tells
+     *  it which one runs (e.g. to rebuild derived data after reading). */
     class Writer
     {
     public:
+      static constexpr bool is_loading = false;
+
       explicit Writer(std::ostream &out)
         : out(out)
       {}
@@ -117,6 +125,8 @@ namespace WheelRail
     class Reader
     {
     public:
+      static constexpr bool is_loading = true;
+
       Reader(std::istream &in, const std::string &name)
         : in(in)
         , name(name)
