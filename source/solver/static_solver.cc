@@ -13,7 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <wheelrail/geometry.h>
-#include <wheelrail/static_solver.h>
+#include <wheelrail/solver/static_solver.h>
 
 #include <Teuchos_ParameterList.hpp>
 

@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <wheelrail/wheelset.h>
+#include <wheelrail/solver/wheelset.h>
 
 #include <cmath>
 #include <string>

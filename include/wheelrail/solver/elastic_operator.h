@@ -1,0 +1,303 @@
+/**
+ * @file elastic_operator.h
+ * The discretised elastic bodies (SPEC 2): DoFs, partitioner and hanging
+ * node constraints (built once, used by the explicit and the static solve),
+ * the per-cell element data in batches, the condensed lumped mass, and the
+ * operations on them: internal forces (one-point hexahedra, St.
+ * Venant-Kirchhoff, stiffness hourglass control, element stiffness damping),
+ * the small-strain stiffness matrix, strain energies and cell stresses.
+ * It holds no time-integration state: the displacement and velocity are
+ * arguments.
+ */
+#ifndef wheelrail_solver_elastic_operator_h
+#define wheelrail_solver_elastic_operator_h
+
+#include <deal.II/base/aligned_vector.h>
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/partitioner.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <wheelrail/parameters.h>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace WheelRail
+{
+  using VectorType = LinearAlgebra::distributed::Vector<double>;
+
+  /** Mesh size and quality figures over all cells (all ranks). */
+  struct MeshQuality
+  {
+    double min_edge            = 0; ///< shortest edge [m]
+    double min_longest_edge    = 0; ///< h_min: smallest cell size [m]
+    double min_length          = 0; ///< smallest L_e = V/A_max [m]
+    double min_scaled_jacobian = 0; ///< at the corners, 1 for a cube [-]
+    double max_aspect_ratio    = 0; ///< longest / shortest edge [-]
+  };
+
+  /** Per-cell stress measures computed from the current displacement. */
+  struct CellStress
+  {
+    Tensor<2, dim> second_piola_kirchhoff;
+    double         von_mises; ///< of the Cauchy stress
+  };
+
+  /** Strain energies of the bodies at one displacement [J]. */
+  struct StrainEnergies
+  {
+    double internal            = 0; ///< St. Venant-Kirchhoff strain energy
+    double hourglass           = 0; ///< stored in the hourglass springs
+    double hourglass_reference = 0; ///< hourglass energy with QM = 0.1
+  };
+
+  /** Time Integration/Damping model, decided once at setup. */
+  enum class DampingModel
+  {
+    none,
+    stiffness, ///< beta_e = 2 COEF / omega_e, omega_e = 2 c / L_e
+    rayleigh   ///< beta_e = Rayleigh beta for every cell
+  };
+
+  /**
+   * The elastic operator on a distributed mesh of trilinear hexahedra.
+   * Vectors are LinearAlgebra::distributed::Vector on partitioner(): the
+   * locally relevant DoFs and every master of a hanging-node constraint are
+   * ghosts. Element data are stored in batches of n_lanes cells (structure
+   * of arrays) for the vectorised kernel of element_kernel.h.
+   */
+  class ElasticOperator
+  {
+  public:
+    /** Lanes of a cell batch; the kernel vectorises across them. */
+    static constexpr unsigned int n_lanes = 8;
+
+    ElasticOperator(const Parameters                          &parameters,
+                    parallel::distributed::Triangulation<dim> &triangulation);
+
+    /** Distribute DoFs, build the constraints, element data and mass. */
+    void
+    setup();
+
+    /**
+     * f = f_int(u) + f_damp(v) over the cells, not condensed, not
+     * compressed (the caller adds contact forces, then condenses). Damping
+     * forces only if @p v is given and the damping model is not none.
+     * With @p f_is_zero the caller guarantees f = 0 already (owned and ghost
+     * entries). Returns the damping power.
+     */
+    double
+    element_forces(const VectorType &u,
+                   const VectorType *v,
+                   VectorType       &f,
+                   const bool        f_is_zero) const;
+    /** Add hanging-node entries of @p f to their masters and zero them. */
+    void
+    condense(VectorType &f) const;
+    /** Set hanging-node entries of @p x (and of @p y) from their masters. */
+    void
+    distribute(VectorType &x, VectorType *y = nullptr) const;
+
+    /**
+     * Assemble the stiffness of the one-point element with hourglass
+     * control at u = 0 (the small-strain tangent) into @p matrix through
+     * @p constraints, one cell at a time.
+     */
+    void
+    assemble_stiffness(TrilinosWrappers::SparseMatrix  &matrix,
+                       const AffineConstraints<double> &constraints) const;
+    /** Internal and hourglass energy at @p u (this rank's cells). */
+    StrainEnergies
+    strain_energies(const VectorType &u) const;
+    /** Stress at @p u of every locally owned cell (in active cell index order). */
+    std::vector<CellStress>
+    stresses(const VectorType &u) const;
+    /** Volume-weighted nodal sums of H = grad u: @p gradient[j] holds
+     *  V H_ij at DoF (node, i), @p weight the volumes V (compressed). */
+    void
+    nodal_gradient(const VectorType            &u,
+                   std::array<VectorType, dim> &gradient,
+                   VectorType                  &weight) const;
+    /** Set the owned entries of @p x at the nodes of cells of @p material
+     *  (all cells if invalid id) to @p value_of_X at the node. */
+    void
+    interpolate(const std::function<Tensor<1, dim>(const Point<dim> &)> &value_of_X,
+                const types::material_id                                 material,
+                VectorType                                              &x) const;
+
+    /** Stable step C min_e(L_e/c) with the damping reduction [s]. */
+    double
+    stable_time_step() const
+    {
+      return stable_dt;
+    }
+    /** Sizes and quality of the mesh. */
+    const MeshQuality &
+    mesh_quality() const
+    {
+      return quality;
+    }
+    DampingModel
+    damping_model() const
+    {
+      return damping;
+    }
+    /** Condensed lumped mass, per DoF (0 on hanging DoFs). */
+    const VectorType &
+    lumped_mass() const
+    {
+      return mass;
+    }
+    const AffineConstraints<double> &
+    get_hanging_constraints() const
+    {
+      return hanging_constraints;
+    }
+    const DoFHandler<dim> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &
+    partitioner() const
+    {
+      return vector_partitioner;
+    }
+    /** Sum of the condensed lumped mass [kg] of cells of @p material. */
+    double
+    total_mass(const types::material_id material = numbers::invalid_material_id) const;
+    /** Sum of the reference cell volumes of @p material [m^3]. */
+    double
+    mesh_volume(const types::material_id material = numbers::invalid_material_id) const;
+    /** Number of locally owned cells (all ranks: use MPI sum). */
+    unsigned int
+    n_local_cells() const
+    {
+      return n_cells;
+    }
+    /** Number of locally owned cells in family batches (8 children of one
+     *  parent, 27 nodes gathered and scattered instead of 64). */
+    unsigned int
+    n_family_cells() const
+    {
+      return 8 * (family_nodes.size() / 27);
+    }
+    /** Reference position of the support point of local DoF index i. */
+    const std::vector<Point<dim>> &
+    support_points() const
+    {
+      return node_points;
+    }
+    /** Component (0, 1, 2) of the DoF with local index i. */
+    unsigned int
+    dof_component(const unsigned int i) const
+    {
+      return node_component[i];
+    }
+    /** Material id of the cells around the DoF with local index i. */
+    types::material_id
+    dof_material(const unsigned int i) const
+    {
+      return node_material[i];
+    }
+    /** DoFs on the boundary (local indices of locally relevant DoFs). */
+    const std::vector<bool> &
+    boundary_dof_mask() const
+    {
+      return on_boundary;
+    }
+    /** Local indices of the DoFs with a hanging-node constraint. */
+    const std::vector<unsigned int> &
+    constrained_local_dofs() const
+    {
+      return constrained_dofs;
+    }
+
+  protected:
+    const Parameters                                  &prm;
+    parallel::distributed::Triangulation<dim>         &triangulation;
+    MPI_Comm                                           mpi_communicator;
+    std::shared_ptr<const Utilities::MPI::Partitioner> vector_partitioner;
+    /** Reference position, material and component of each DoF (local
+     *  indices of the ghosted vectors). */
+    std::vector<Point<dim>>         node_points;
+    std::vector<types::material_id> node_material;
+    std::vector<unsigned char>      node_component; ///< 0, 1, 2 = x, y, z
+    VectorType                      mass;           ///< condensed lumped mass, per DoF
+
+  private:
+    /** Move hanging vertices to the mean of their masters (see .cc). */
+    void
+    make_hanging_vertices_conforming();
+    /** Ghost set, partitioner and the flat copy of the constraints. */
+    void
+    setup_partitioner();
+    /** Reference position, material, component, boundary flag per DoF. */
+    void
+    setup_node_data();
+    /** Locally owned cells in batch order: families first (see .cc). */
+    std::vector<DoFHandler<dim>::active_cell_iterator>
+    cells_in_batch_order() const;
+    /** Element data of every batch, the mesh quality and the stable step. */
+    void
+    setup_cell_data();
+    /** Batches that hold a family: their 27 grid nodes. */
+    void
+    find_families();
+    void
+    setup_lumped_mass();
+    /** Request the element data of @p batch into the cache. */
+    void
+    prefetch_batch(const unsigned int batch) const;
+    /** Batches ahead of the one computed that prefetch_batch() requests. */
+    static constexpr unsigned int prefetch_distance = 2;
+
+    FESystem<dim>             fe;
+    DoFHandler<dim>           dof_handler;
+    AffineConstraints<double> hanging_constraints;
+    DampingModel              damping = DampingModel::none;
+
+    /** Hanging-node constraints in local indices, flat (CSR): line k
+     *  constrains constrained_dofs[k] to the masters constraint_masters[j]
+     *  with weights constraint_weights[j], j in [constraint_offsets[k],
+     *  constraint_offsets[k + 1]). */
+    std::vector<unsigned int> constrained_dofs;
+    std::vector<unsigned int> constraint_offsets;
+    std::vector<unsigned int> constraint_masters;
+    std::vector<double>       constraint_weights;
+
+    // Element data, batches of n_lanes cells, structure of arrays.
+    unsigned int              n_cells   = 0;
+    unsigned int              n_batches = 0;
+    AlignedVector<double>     batch_data;       ///< [batch][field][lane]
+    std::vector<unsigned int> batch_nodes;      ///< [batch][vertex][lane]
+    std::vector<unsigned int> batch_cell_index; ///< active cell index
+    /** Batches whose 8 cells are the 8 children of one parent, in child
+     *  order (lane l = child l): their 27 distinct nodes, the x-DoF of each
+     *  in the parent's 3x3x3 lexicographic grid ([family][27]). */
+    std::vector<unsigned int> family_nodes;
+    /** Index into family_nodes / 27 of each batch, or invalid_unsigned_int. */
+    std::vector<unsigned int>       batch_family;
+    std::vector<types::material_id> batch_material;
+    std::vector<double>             batch_kappa_ref; ///< hourglass stiffness with QM = 0.1
+    double                          lame_lambda = 0; ///< of the one material [Pa]
+    double                          lame_mu     = 0;
+
+    std::vector<bool> on_boundary;
+    double            stable_dt = 0;
+    MeshQuality       quality;
+  };
+} // namespace WheelRail
+
+#endif

@@ -1,0 +1,153 @@
+/**
+ * @file wheelset.h
+ * The rigid axle that carries the wheel's bore, the sprung mass on the
+ * primary suspension, and the driving torque (SPEC 3).
+ */
+#ifndef wheelrail_solver_wheelset_h
+#define wheelrail_solver_wheelset_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <wheelrail/checkpoint.h>
+#include <wheelrail/parameters.h>
+
+namespace WheelRail
+{
+  /**
+   * Rigid-body state of the axle (translation in x and z, rotation about y;
+   * y is fixed) and of the sprung mass (vertical; horizontally it moves with
+   * the axle). The bore nodes of the wheel belong to the rigid body: their
+   * lumped masses and inertia are added to the axle's, and the FE forces on
+   * them drive it. Central differences as for the FE nodes.
+   *
+   * The suspension force on the axle is
+   *   F_s = -M_c g + K (d_c - d_a) + C (v_c - v_a),
+   * d_a, d_c the vertical displacements of axle and sprung mass from the
+   * static state (where the spring carries M_c g).
+   */
+  class Wheelset
+  {
+  public:
+    Wheelset(const WheelsetParameters &parameters,
+             const SolverParameters   &solver,
+             const Point<dim>         &axle_centre);
+
+    /** Lumped mass and polar inertia of the bore nodes and of the whole FE
+     *  wheel (all ranks). */
+    void
+    set_bore_inertia(const double mass,
+                     const double polar_inertia,
+                     const double fe_wheel_mass,
+                     const double fe_wheel_inertia);
+
+    /**
+     * Traction coefficient of steady rolling under the torque: the traction
+     * force accelerates the vehicle (horizontal mass M) and, with it, the
+     * wheel's rotation (polar inertia I), so F_L = T / (r (1 + I / (M r^2))).
+     */
+    double
+    steady_traction_coefficient() const;
+
+    /** Start the rolling run: axle at @p static_axle (after the static
+     *  solve), velocity V along x, angular velocity +V / r_eff about y
+     *  (SPEC 5.3 writes -V/r_eff, which with its own v = V e_x + omega x
+     *  (x - x_axle) would make the contact point move at 2V). */
+    void
+    start_rolling(const Point<dim> &static_axle, const double rolling_radius);
+
+    /** Write and read the axle and suspension state (checkpoints). */
+    void
+    save(Checkpoint::Writer &out) const
+    {
+      out.pod(active);
+      out.pod(displacement);
+      out.pod(velocity);
+      for (const double x : {theta, omega, d_axle_static, d_c, v_c, work, damper_loss, radius})
+        out.pod(x);
+    }
+    void
+    load(Checkpoint::Reader &in)
+    {
+      in.pod(active);
+      in.pod(displacement);
+      in.pod(velocity);
+      for (double *x : {&theta, &omega, &d_axle_static, &d_c, &v_c, &work, &damper_loss, &radius})
+        in.pod(*x);
+    }
+
+    /** Torque about +y at time t [N m] (positive drives towards +x). */
+    double
+    torque(const double t) const;
+
+    /**
+     * Advance by one step: @p force and @p moment are the FE forces on the
+     * bore nodes (summed over all ranks, gravity of the bore nodes included)
+     * and their moment about the axle (y component).
+     */
+    void
+    advance(const Tensor<1, dim> &force,
+            const double          moment,
+            const double          h,
+            const double          dt,
+            const double          t);
+
+    /** Displacement of the bore node with reference position X. */
+    Tensor<1, dim>
+    bore_displacement(const Point<dim> &X) const;
+
+    Point<dim>
+    axle_position() const
+    {
+      return centre + displacement;
+    }
+    const Tensor<1, dim> &
+    axle_velocity() const
+    {
+      return velocity;
+    }
+    double
+    angular_velocity() const
+    {
+      return omega;
+    }
+    double
+    angle() const
+    {
+      return theta;
+    }
+    /** Static wheel load (M_c + unsprung mass) g [N]. */
+    double
+    static_load() const;
+    /** Torque for the nominal traction coefficient: mu_n R_w F_N,static. */
+    double
+    nominal_torque() const;
+
+    /** Energies of the rigid parts [J]. */
+    double
+    kinetic() const; ///< axle (without bore nodes), sprung mass
+    double
+    spring_energy() const; ///< suspension spring beyond the static preload
+    double
+    external_work() const; ///< gravity on axle and sprung mass, torque
+    double
+    damper_dissipation() const
+    {
+      return damper_loss;
+    }
+
+  private:
+    const WheelsetParameters &prm;
+    const double              g;      ///< |gravity|
+    const Point<dim>          centre; ///< reference axle centre
+    double                    m_axle = 0, m_bore = 0, i_bore = 0, m_wheel = 0, i_wheel = 0;
+    bool                      active = false;
+    Tensor<1, dim>            displacement, velocity; ///< axle, x and z used
+    double                    theta = 0, omega = 0;
+    double                    d_axle_static = 0; ///< axle z displacement at the static state
+    double                    d_c = 0, v_c = 0;  ///< sprung mass, from the static state
+    double                    work = 0, damper_loss = 0, radius = 0;
+  };
+} // namespace WheelRail
+
+#endif

@@ -1,0 +1,313 @@
+/**
+ * @file element_forces.cc
+ * The operations of ElasticOperator on the element data: the element force
+ * loop (gather, kernel, scatter), the small-strain stiffness matrix, strain
+ * energies, cell stresses and nodal displacement gradients. Compiled with
+ * -O3 (CMakeLists.txt) together with the kernel of element_kernel.h.
+ */
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <wheelrail/solver/elastic_operator.h>
+#include <wheelrail/solver/element_kernel.h>
+#include <wheelrail/solver/st_venant_kirchhoff.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace WheelRail
+{
+  using namespace ElementKernel;
+
+
+
+  double
+  ElasticOperator::element_forces(const VectorType &u_in,
+                                  const VectorType *v_in,
+                                  VectorType       &f_out,
+                                  const bool        f_is_zero) const
+  {
+    if (!f_is_zero)
+      f_out = 0.;
+    else
+      Assert(std::all_of(f_out.begin(),
+                         f_out.begin() + f_out.locally_owned_size() +
+                           f_out.get_partitioner()->n_ghost_indices(),
+                         [](const double x) { return x == 0; }),
+             ExcInternalError());
+    const double *U            = u_in.begin();
+    const double *V            = v_in ? v_in->begin() : nullptr;
+    double       *F            = f_out.begin();
+    const bool    with_damping = (v_in != nullptr) && damping != DampingModel::none;
+
+    alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
+    std::fill(std::begin(vb), std::end(vb), 0.);
+    // a family's grid values per component, padded: the permutations read
+    // 16 values from any vertex's offset (at most 13 + 15 = 28)
+    alignas(64) double ug[3][32] = {}, vg[3][32] = {};
+    double             power = 0;
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double       *data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        if (batch + prefetch_distance < n_batches)
+          prefetch_batch(batch + prefetch_distance);
+        const unsigned int family = batch_family[batch];
+        if (family != numbers::invalid_unsigned_int)
+          {
+            // the 27 grid nodes once, then each vertex's vector over the
+            // children by one two-source permutation of the grid values
+            const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+            for (unsigned int n = 0; n < 27; ++n)
+              {
+                const unsigned int idx = grid[n];
+                for (unsigned int d = 0; d < 3; ++d)
+                  ug[d][n] = U[idx + d];
+                if (with_damping)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    vg[d][n] = V[idx + d];
+              }
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const unsigned int o = family_offset[a];
+                  store(&ub[(a * 3 + d) * W],
+                        __builtin_shuffle(ElementKernel::load(&ug[d][o]),
+                                          ElementKernel::load(&ug[d][o + W]),
+                                          family_lanes));
+                  if (with_damping)
+                    store(&vb[(a * 3 + d) * W],
+                          __builtin_shuffle(ElementKernel::load(&vg[d][o]),
+                                            ElementKernel::load(&vg[d][o + W]),
+                                            family_lanes));
+                }
+          }
+        else
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int l = 0; l < W; ++l)
+              {
+                const unsigned int idx = nodes[a * W + l];
+                for (unsigned int d = 0; d < 3; ++d)
+                  ub[(a * 3 + d) * W + l] = U[idx + d];
+                if (with_damping)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    vb[(a * 3 + d) * W + l] = V[idx + d];
+              }
+        power += with_damping ? batch_forces<true>(data, lame_lambda, lame_mu, ub, vb, fb) :
+                                batch_forces<false>(data, lame_lambda, lame_mu, ub, vb, fb);
+        if (family != numbers::invalid_unsigned_int)
+          {
+            // each grid node's sum in a register, its terms in the order
+            // of the general scatter below (ascending vertex): the same bits
+            const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+            for (unsigned int n = 0; n < 27; ++n)
+              {
+                const unsigned int idx = grid[n];
+                double             f0 = F[idx], f1 = F[idx + 1], f2 = F[idx + 2];
+                for (unsigned int e = family_scatter.start[n]; e < family_scatter.start[n + 1]; ++e)
+                  {
+                    const double *fe = &fb[family_scatter.entry[e]];
+                    f0 += fe[0];
+                    f1 += fe[W];
+                    f2 += fe[2 * W];
+                  }
+                F[idx]     = f0;
+                F[idx + 1] = f1;
+                F[idx + 2] = f2;
+              }
+            continue;
+          }
+        const unsigned int n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < n_valid; ++l)
+            {
+              const unsigned int idx = nodes[a * W + l];
+              for (unsigned int d = 0; d < 3; ++d)
+                F[idx + d] += fb[(a * 3 + d) * W + l];
+            }
+      }
+    return power;
+  }
+
+
+  void
+  ElasticOperator::prefetch_batch(const unsigned int batch) const
+  {
+    // The kernel reads a batch's 39 fields (2.5 kB) in its own order, not as
+    // one stream, and the hardware prefetcher does not follow: these loads
+    // were the hottest instructions of the element loop (perf annotate of
+    // the paper run). Requested a few batches ahead they arrive while the
+    // current batch computes; the arithmetic is untouched, so are the
+    // results. Measured (./run.sh bench, 2 ranks, 1000 steps): elements
+    // 17.7 -> 14.7-15.6 s. Prefetching the gathered nodal values as well
+    // was slower (17.9 s): those mostly hit the cache already.
+    const char *data =
+      reinterpret_cast<const char *>(&batch_data[std::size_t(batch) * Field::n_fields * W]);
+    for (unsigned int offset = 0; offset < Field::n_fields * W * sizeof(double); offset += 64)
+      __builtin_prefetch(data + offset, 0, 0);
+  }
+
+
+  void
+  ElasticOperator::assemble_stiffness(TrilinosWrappers::SparseMatrix  &matrix,
+                                      const AffineConstraints<double> &constraints) const
+  {
+    FullMatrix<double>                   K(24, 24);
+    std::vector<types::global_dof_index> dofs(24);
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      for (unsigned int l = 0; l < std::min(W, n_cells - batch * W); ++l)
+        {
+          const double *data = &batch_data[std::size_t(batch) * Field::n_fields * W];
+          const auto    D    = [&](const unsigned int field) { return data[field * W + l]; };
+          const double  V0 = D(Field::volume), la = lame_lambda, mu = lame_mu, ka = D(Field::kappa);
+          // gamma_alpha,a = h_alpha,a - c_alpha . b_a
+          double gamma[4][8];
+          for (unsigned int al = 0; al < 4; ++al)
+            for (unsigned int a = 0; a < 8; ++a)
+              {
+                gamma[al][a] = hg[al][a];
+                for (unsigned int j = 0; j < 3; ++j)
+                  gamma[al][a] -= D(Field::c + al * 3 + j) * D(Field::b + a * 3 + j);
+              }
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int bn = 0; bn < 8; ++bn)
+                for (unsigned int k = 0; k < 3; ++k)
+                  {
+                    // V0 (lambda b_ai b_bk + mu (b_ak b_bi + delta_ik b_a.b_b))
+                    double bb = 0;
+                    for (unsigned int j = 0; j < 3; ++j)
+                      bb += D(Field::b + a * 3 + j) * D(Field::b + bn * 3 + j);
+                    double value = V0 * (la * D(Field::b + a * 3 + i) * D(Field::b + bn * 3 + k) +
+                                         mu * D(Field::b + a * 3 + k) * D(Field::b + bn * 3 + i) +
+                                         (i == k ? mu * bb : 0.));
+                    if (i == k)
+                      for (unsigned int al = 0; al < 4; ++al)
+                        value += ka * gamma[al][a] * gamma[al][bn];
+                    K(3 * a + i, 3 * bn + k) = value;
+                  }
+          const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int d = 0; d < 3; ++d)
+              dofs[3 * a + d] = vector_partitioner->local_to_global(nodes[a * W + l] + d);
+          constraints.distribute_local_to_global(K, dofs, matrix);
+        }
+  }
+
+
+  StrainEnergies
+  ElasticOperator::strain_energies(const VectorType &u) const
+  {
+    const double *U  = u.begin();
+    double        ie = 0, hge = 0, hge_ref = 0;
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int l = 0; l < n_valid; ++l)
+          {
+            double H[3][3];
+            displacement_gradient(U, nodes, data, l, H);
+            double E[3][3], EE = 0;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  double hth = 0;
+                  for (unsigned int k = 0; k < 3; ++k)
+                    hth += H[k][i] * H[k][j];
+                  E[i][j] = 0.5 * (H[i][j] + H[j][i] + hth);
+                  EE += E[i][j] * E[i][j];
+                }
+            const double trE = E[0][0] + E[1][1] + E[2][2];
+            ie += data[Field::volume * W + l] * (0.5 * lame_lambda * trE * trE + lame_mu * EE);
+            double gg = 0;
+            for (unsigned int al = 0; al < 4; ++al)
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  double s = 0;
+                  for (unsigned int a = 0; a < 8; ++a)
+                    s += hg[al][a] * U[nodes[a * W + l] + i];
+                  for (unsigned int j = 0; j < 3; ++j)
+                    s -= data[(Field::c + al * 3 + j) * W + l] * H[i][j];
+                  gg += s * s;
+                }
+            hge += 0.5 * data[Field::kappa * W + l] * gg;
+            hge_ref += 0.5 * batch_kappa_ref[std::size_t(batch) * W + l] * gg;
+          }
+      }
+    StrainEnergies e;
+    e.internal            = ie;
+    e.hourglass           = hge;
+    e.hourglass_reference = hge_ref;
+    return e;
+  }
+
+
+  std::vector<CellStress>
+  ElasticOperator::stresses(const VectorType &u) const
+  {
+    std::vector<CellStress> result(triangulation.n_active_cells());
+    const double           *U = u.begin();
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int l = 0; l < n_valid; ++l)
+          {
+            double h[3][3];
+            displacement_gradient(U, nodes, data, l, h);
+            Tensor<2, dim> H;
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                H[i][j] = h[i][j];
+            const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
+            const Tensor<2, dim> E = StVenantKirchhoff::green_lagrange_strain(F);
+            const Tensor<2, dim> S =
+              StVenantKirchhoff::second_piola_kirchhoff_stress(E, lame_lambda, lame_mu);
+            const Tensor<2, dim> sigma = F * S * transpose(F) / determinant(F);
+            const Tensor<2, dim> dev =
+              sigma - trace(sigma) / 3. * Tensor<2, dim>(unit_symmetric_tensor<dim>());
+            CellStress &cs            = result[batch_cell_index[std::size_t(batch) * W + l]];
+            cs.second_piola_kirchhoff = S;
+            cs.von_mises              = std::sqrt(1.5 * scalar_product(dev, dev));
+          }
+      }
+    return result;
+  }
+
+
+  void
+  ElasticOperator::nodal_gradient(const VectorType            &u,
+                                  std::array<VectorType, dim> &gradient,
+                                  VectorType                  &weight) const
+  {
+    weight.reinit(vector_partitioner);
+    for (auto &g : gradient)
+      g.reinit(vector_partitioner);
+    const double *U = u.begin();
+    for (unsigned int batch = 0; batch < n_batches; ++batch)
+      {
+        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
+        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+        for (unsigned int l = 0; l < n_valid; ++l)
+          {
+            double H[3][3];
+            displacement_gradient(U, nodes, data, l, H);
+            const double V0 = data[Field::volume * W + l];
+            for (unsigned int a = 0; a < 8; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                {
+                  const unsigned int k = nodes[a * W + l] + i;
+                  weight.local_element(k) += V0;
+                  for (unsigned int j = 0; j < 3; ++j)
+                    gradient[j].local_element(k) += V0 * H[i][j];
+                }
+          }
+      }
+    weight.compress(VectorOperation::add);
+    for (auto &g : gradient)
+      g.compress(VectorOperation::add);
+  }
+} // namespace WheelRail

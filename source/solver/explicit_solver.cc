@@ -1,0 +1,607 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/mpi.h>
+
+#include <wheelrail/geometry.h>
+#include <wheelrail/solver/explicit_solver.h>
+#include <wheelrail/stopwatch.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace WheelRail
+{
+  namespace
+  {
+    /** Rotation about +y by angle @p theta applied to @p r. */
+    Tensor<1, dim>
+    rotate_about_y(const Tensor<1, dim> &r, const double theta)
+    {
+      const double c = std::cos(theta), s = std::sin(theta);
+      return Tensor<1, dim>({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
+    }
+  } // namespace
+
+
+
+  ExplicitSolver::ExplicitSolver(const Parameters                          &parameters,
+                                 parallel::distributed::Triangulation<dim> &tria)
+    : ElasticOperator(parameters, tria)
+  {}
+
+
+
+  void
+  ExplicitSolver::setup()
+  {
+    check_boundary_ids(prm, triangulation);
+    ElasticOperator::setup();
+
+    for (VectorType *vec : {&u, &v, &f, &v_old, &inv_mass, &f_ext, &u0})
+      vec->reinit(vector_partitioner);
+    f_cleared = false;
+
+    // gravity load: g times the condensed row-sum mass (= condensed rho g N)
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      {
+        f_ext.local_element(i)    = mass.local_element(i) * prm.solver.gravity[node_component[i]];
+        inv_mass.local_element(i) = mass.local_element(i) > 0 ? 1. / mass.local_element(i) : 0.;
+      }
+    // hanging DoFs carry neither mass nor load: they follow their masters
+    for (const unsigned int i : constrained_local_dofs())
+      if (i < inv_mass.locally_owned_size())
+        {
+          inv_mass.local_element(i) = 0;
+          f_ext.local_element(i)    = 0;
+        }
+
+    prescribed = prescribed_dofs(prm, *this, bore_dofs);
+    for (const PrescribedDof &p : prescribed)
+      inv_mass.local_element(p.index) = 0;
+    prescribed_velocity.reset();
+    if (!prm.boundary.prescribed_velocity_ids.empty())
+      prescribed_velocity = make_vector_function(prm.boundary.prescribed_velocity_expression,
+                                                 prm.boundary.prescribed_velocity_constants,
+                                                 "x,y,z,t",
+                                                 "Boundary conditions/Prescribed velocity");
+
+    applied = applied_force_dofs(prm, *this);
+    applied_force.reset();
+    if (!prm.boundary.applied_force_ids.empty())
+      applied_force = make_vector_function(prm.boundary.applied_force_expression,
+                                           prm.boundary.applied_force_constants,
+                                           "x,y,z,t",
+                                           "Boundary conditions/Applied force");
+
+    t                   = 0;
+    n_steps             = 0;
+    damping_dissipation = 0;
+    boundary_work       = 0;
+  }
+
+
+  void
+  ExplicitSolver::attach_wheelset(Wheelset *ws)
+  {
+    wheelset = ws;
+    if (wheelset == nullptr)
+      return;
+    const Point<dim> centre   = Geometry::wheel_centre(prm.geometry);
+    double           local[2] = {0, 0};
+    for (const auto &p : prescribed)
+      if (p.kind == BoundaryKind::rigid_axle && p.component == 0)
+        {
+          const Tensor<1, dim> r = node_points[p.index] - centre;
+          local[0] += mass.local_element(p.index);
+          local[1] += mass.local_element(p.index) * (r[0] * r[0] + r[2] * r[2]);
+        }
+    // polar inertia of the whole FE wheel about the axle
+    double wheel_inertia = 0;
+    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
+      if (node_material[i] == Geometry::MaterialIds::wheel && node_component[i] == 0)
+        {
+          const Tensor<1, dim> r = node_points[i] - centre;
+          wheel_inertia += mass.local_element(i) * (r[0] * r[0] + r[2] * r[2]);
+        }
+    double global[2];
+    Utilities::MPI::sum(ArrayView<const double>(local, 2),
+                        mpi_communicator,
+                        ArrayView<double>(global, 2));
+    wheelset->set_bore_inertia(global[0],
+                               global[1],
+                               total_mass(Geometry::MaterialIds::wheel),
+                               Utilities::MPI::sum(wheel_inertia, mpi_communicator));
+  }
+
+
+  void
+  ExplicitSolver::set_time_step(const double time_step)
+  {
+    AssertThrow(time_step > 0, ExcMessage("Internal error: time step <= 0."));
+    dt = time_step;
+  }
+
+
+  void
+  ExplicitSolver::set_displacement(const std::function<Tensor<1, dim>(const Point<dim> &)> &u_of_X,
+                                   const types::material_id material)
+  {
+    interpolate(u_of_X, material, u);
+    u.update_ghost_values();
+    distribute(u);
+    u0 = u;
+    for (auto &p : prescribed)
+      p.u_prev = u.local_element(p.index);
+  }
+
+
+  void
+  ExplicitSolver::set_velocity(
+    const std::function<Tensor<1, dim>(const Point<dim> &, const types::material_id)> &v_of_X)
+  {
+    for (unsigned int i = 0; i < node_points.size(); ++i)
+      if (node_material[i] != numbers::invalid_material_id)
+        v.local_element(i) = v_of_X(node_points[i], node_material[i])[node_component[i]];
+    v.update_ghost_values();
+    distribute(v);
+    for (auto &p : prescribed)
+      p.v_prev = v.local_element(p.index);
+  }
+
+
+  void
+  ExplicitSolver::add_centrifugal_load(const Point<dim> &centre,
+                                       const double      omega,
+                                       const double      factor)
+  {
+    for (unsigned int k = 0; k < f_ext.locally_owned_size(); ++k)
+      if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] != 1)
+        f_ext.local_element(k) += factor * mass.local_element(k) * omega * omega *
+                                  (node_points[k] - centre)[node_component[k]];
+  }
+
+
+  void
+  ExplicitSolver::set_rolling_velocity(const Tensor<1, dim> &V,
+                                       const Point<dim>     &centre,
+                                       const double          omega)
+  {
+    // volume-weighted nodal average of H = grad u: gradient[j] holds H_ij at
+    // DoF (node, i)
+    std::array<VectorType, dim> gradient;
+    VectorType                  weight;
+    nodal_gradient(u, gradient, weight);
+
+    for (unsigned int k = 0; k < v.locally_owned_size(); ++k)
+      {
+        const unsigned int i = node_component[k];
+        double             H[3];
+        for (unsigned int j = 0; j < 3; ++j)
+          H[j] = weight.local_element(k) > 0 ?
+                   gradient[j].local_element(k) / weight.local_element(k) :
+                   0.;
+        if (node_material[k] == Geometry::MaterialIds::wheel)
+          {
+            const Tensor<1, dim> r    = node_points[k] - centre;
+            const double         w[3] = {omega * r[2], 0., -omega * r[0]};
+            v.local_element(k)        = V[i] + w[i] + H[0] * w[0] + H[1] * w[1] + H[2] * w[2];
+          }
+        else
+          v.local_element(k) = -V[0] * H[0];
+      }
+    v.update_ghost_values();
+    distribute(v);
+    for (auto &p : prescribed)
+      p.v_prev = v.local_element(p.index);
+  }
+
+
+  double
+  ExplicitSolver::assemble_forces(const VectorType &u_in,
+                                  const VectorType *v_in,
+                                  VectorType       &f_out,
+                                  const bool        with_contact,
+                                  const bool        advance,
+                                  const bool        f_is_zero)
+  {
+    Clock::time_point clock = Clock::now();
+    const double      power = element_forces(u_in, v_in, f_out, f_is_zero);
+    times.elements += lap(clock);
+    if (with_contact && contact != nullptr)
+      {
+        contact->add_forces(u_in, dt, advance, f_out);
+        times.contact += lap(clock);
+      }
+    condense(f_out);
+    times.update += lap(clock);
+    f_out.compress(VectorOperation::add);
+    times.communication += lap(clock);
+    return power;
+  }
+
+
+  void
+  ExplicitSolver::compute_internal_force(VectorType &force)
+  {
+    force.reinit(vector_partitioner);
+    assemble_forces(u, nullptr, force, false, false);
+  }
+
+
+  void
+  ExplicitSolver::compute_residual(VectorType &residual)
+  {
+    residual.reinit(vector_partitioner);
+    assemble_forces(u, nullptr, residual, true, false);
+    for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
+      residual.local_element(i) -= f_ext.local_element(i);
+  }
+
+
+  void
+  ExplicitSolver::compute_residual(const VectorType &w, VectorType &residual)
+  {
+    residual.reinit(vector_partitioner);
+    assemble_forces(w, nullptr, residual, true, false);
+    for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
+      residual.local_element(i) -= f_ext.local_element(i);
+  }
+
+
+  void
+  ExplicitSolver::set_displacement(const VectorType &displacement)
+  {
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      u.local_element(i) = displacement.local_element(i);
+    u.update_ghost_values();
+    distribute(u);
+    u0 = u;
+    for (auto &p : prescribed)
+      p.u_prev = u.local_element(p.index);
+  }
+
+
+  Tensor<1, dim>
+  ExplicitSolver::momentum(const types::material_id material) const
+  {
+    double local[3] = {0, 0, 0};
+    for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+      if (node_material[i] == material)
+        local[node_component[i]] += mass.local_element(i) * v.local_element(i);
+    double global[3];
+    Utilities::MPI::sum(ArrayView<const double>(local, 3),
+                        mpi_communicator,
+                        ArrayView<double>(global, 3));
+    return Tensor<1, dim>({global[0], global[1], global[2]});
+  }
+
+
+  Tensor<1, dim>
+  ExplicitSolver::mean_displacement(const types::material_id material) const
+  {
+    double local[4] = {0, 0, 0, 0};
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      if (node_material[i] == material)
+        {
+          local[node_component[i]] += u.local_element(i);
+          if (node_component[i] == 0)
+            local[3] += 1;
+        }
+    double global[4];
+    Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                        mpi_communicator,
+                        ArrayView<double>(global, 4));
+    Tensor<1, dim> mean;
+    for (unsigned int d = 0; d < dim; ++d)
+      mean[d] = global[3] > 0 ? global[d] / global[3] : 0.;
+    return mean;
+  }
+
+
+  void
+  ExplicitSolver::step(Energies *energies)
+  {
+    Assert(dt > 0, ExcInternalError());
+    const bool   first = (n_steps == 0);
+    const double h     = first ? 0.5 * dt : dt; // v_{1/2} = v_0 + dt/2 a_0
+
+    Clock::time_point clock        = Clock::now();
+    double            gravity_work = 0;
+    if (energies)
+      {
+        energies->time                = t;
+        energies->step                = n_steps;
+        const StrainEnergies strain   = strain_energies(u);
+        energies->internal            = strain.internal;
+        energies->hourglass           = strain.hourglass;
+        energies->hourglass_reference = strain.hourglass_reference;
+        for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+          gravity_work += f_ext.local_element(i) * (u.local_element(i) - u0.local_element(i));
+        times.energies += lap(clock);
+      }
+
+    const bool   damping = damping_model() != DampingModel::none;
+    const double power   = assemble_forces(u, damping ? &v : nullptr, f, true, true, f_cleared);
+    clock                = Clock::now();
+
+    // applied forces at t_n (enter f with the sign of internal forces)
+    Tensor<1, dim> applied_total;
+    double         work_step = apply_forces(h, applied_total);
+
+    double       *U = u.begin();
+    double       *V = v.begin();
+    double       *F = f.begin();
+    const double *G = f_ext.begin();
+    // the net forces that the prescribed DoFs and the axle need after the
+    // update, which clears f behind itself (f = 0 for the next step's
+    // assembly without a pass of its own over the vector)
+    for (auto &p : prescribed)
+      {
+        const unsigned int n_components =
+          (p.kind == BoundaryKind::rigid_axle && p.component == 0) ? 3 : 1;
+        for (unsigned int c = 0; c < n_components; ++c)
+          p.net_force[c] = G[p.index + c] - F[p.index + c];
+      }
+    const double      *IM = inv_mass.begin();
+    const double      *M  = mass.begin();
+    const unsigned int n  = u.locally_owned_size();
+    double             ke = 0;
+    if (energies == nullptr)
+      {
+#pragma omp simd
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            V[i] += h * IM[i] * (G[i] - F[i]);
+            U[i] += dt * V[i];
+            F[i] = 0;
+          }
+      }
+    else
+      {
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double vo = V[i];
+            V[i] += h * IM[i] * (G[i] - F[i]);
+            U[i] += dt * V[i];
+            F[i]            = 0;
+            const double va = first ? vo : 0.5 * (vo + V[i]);
+            if (IM[i] > 0)
+              ke += 0.5 * M[i] * va * va;
+          }
+      }
+
+    f_cleared = true;
+    for (const auto &[i, d, w] : applied)
+      work_step += 0.5 * h * w * applied_total[d] * V[i];
+
+    if (wheelset)
+      advance_wheelset(h);
+    const double t_new = t + dt;
+    update_prescribed(h, first, energies != nullptr, work_step, ke);
+    if (energies)
+      collect_energies(*energies, ke, gravity_work, power, h, work_step, first);
+    damping_dissipation += h * power;
+    boundary_work += work_step;
+    times.update += lap(clock);
+
+    u.update_ghost_values();
+    v.update_ghost_values();
+    times.communication += lap(clock);
+    distribute(u, &v);
+    times.update += lap(clock);
+    t = t_new;
+    ++n_steps;
+    ++times.steps;
+  }
+
+
+  double
+  ExplicitSolver::apply_forces(const double h, Tensor<1, dim> &applied_total)
+  {
+    double work_step = 0;
+    if (applied_force)
+      {
+        applied_force->set_time(t);
+        for (unsigned int d = 0; d < dim; ++d)
+          applied_total[d] = applied_force->value(Point<dim>(), d);
+        for (const auto &[i, d, w] : applied)
+          f.local_element(i) -= w * applied_total[d];
+      }
+    // applied-force work over the step, with the old velocity (the new one
+    // is added after the update)
+    const double *V = v.begin();
+    for (const auto &[i, d, w] : applied)
+      work_step += 0.5 * h * w * applied_total[d] * V[i];
+    return work_step;
+  }
+
+
+  void
+  ExplicitSolver::advance_wheelset(const double h)
+  {
+    // the rigid axle: the FE forces on the bore nodes and their moment
+    const double    *U        = u.begin();
+    const Point<dim> axle     = wheelset->axle_position();
+    double           local[4] = {0, 0, 0, 0};
+    // per bore vertex (its x-DoF; y and z follow contiguously)
+    for (const auto &p : prescribed)
+      if (p.kind == BoundaryKind::rigid_axle && p.component == 0)
+        {
+          const unsigned int i  = p.index;
+          const double       fx = p.net_force[0], fy = p.net_force[1], fz = p.net_force[2];
+          const double       rx = node_points[i][0] + U[i] - axle[0];
+          const double       rz = node_points[i][2] + U[i + 2] - axle[2];
+          local[0] += fx;
+          local[1] += fy;
+          local[2] += fz;
+          local[3] += rz * fx - rx * fz;
+        }
+    double global[4];
+    Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                        mpi_communicator,
+                        ArrayView<double>(global, 4));
+    wheelset->advance(Tensor<1, dim>({global[0], global[1], global[2]}), global[3], h, dt, t);
+  }
+
+
+  void
+  ExplicitSolver::update_prescribed(const double h,
+                                    const bool   first,
+                                    const bool   with_energies,
+                                    double      &work,
+                                    double      &ke)
+  {
+    double       *U = u.begin();
+    double       *V = v.begin();
+    const double *M = mass.begin();
+    // prescribed DoFs: fixed, velocity function (at the middle of the
+    // step), spinning axle, rigid axle
+    if (prescribed_velocity)
+      prescribed_velocity->set_time(t + 0.5 * dt);
+    const double     t_new  = t + dt;
+    const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
+    const double     omega  = prm.initial.wheel_angular_velocity;
+    for (auto &p : prescribed)
+      {
+        double u_new = p.u_prev;
+        if (p.kind == BoundaryKind::prescribed_velocity)
+          u_new = p.u_prev + dt * prescribed_velocity->value(node_points[p.index], p.component);
+        else if (p.kind == BoundaryKind::spinning_axle)
+          {
+            const Tensor<1, dim> r = node_points[p.index] - centre;
+            u_new                  = (rotate_about_y(r, omega * t_new) - r)[p.component];
+          }
+        else if (p.kind == BoundaryKind::rigid_axle)
+          u_new = wheelset->bore_displacement(node_points[p.index])[p.component];
+        const double v_new = (u_new - p.u_prev) / dt;
+        // reaction that enforces the motion, and its work over the step
+        // over [t_{n-1/2}, t_{n+1/2}] (the first step: [0, dt/2])
+        // (the rigid axle's bore nodes are part of the wheelset's balance)
+        if (p.kind != BoundaryKind::rigid_axle)
+          {
+            const double r = M[p.index] * (v_new - p.v_prev) / h - p.net_force[0];
+            work += r * h * 0.5 * (p.v_prev + v_new);
+          }
+        const double va = first ? p.v_prev : 0.5 * (p.v_prev + v_new);
+        if (with_energies)
+          ke += 0.5 * M[p.index] * va * va;
+        U[p.index] = u_new;
+        V[p.index] = v_new;
+        p.u_prev   = u_new;
+        p.v_prev   = v_new;
+      }
+  }
+
+
+  void
+  ExplicitSolver::collect_energies(Energies    &energies,
+                                   const double ke,
+                                   const double gravity_work,
+                                   const double damping_power,
+                                   const double h,
+                                   const double work_step,
+                                   const bool   first) const
+  {
+    // dissipation and boundary work up to t_n: all earlier steps plus
+    // half of the current one (none at t_0)
+    const double half     = first ? 0. : 0.5;
+    const double local[7] = {ke,
+                             gravity_work,
+                             damping_dissipation + half * h * damping_power,
+                             boundary_work + half * work_step,
+                             energies.internal,
+                             energies.hourglass,
+                             energies.hourglass_reference};
+    double       global[7];
+    Utilities::MPI::sum(ArrayView<const double>(local, 7),
+                        mpi_communicator,
+                        ArrayView<double>(global, 7));
+    energies.kinetic             = global[0];
+    energies.damping             = global[2];
+    energies.external_work       = global[1] + global[3];
+    energies.internal            = global[4];
+    energies.hourglass           = global[5];
+    energies.hourglass_reference = global[6];
+    if (contact)
+      {
+        // replicated on every rank: no sum
+        energies.contact  = contact->summary().elastic_energy;
+        energies.friction = contact->friction_dissipation();
+        energies.damping += contact->damping_dissipation();
+      }
+    if (wheelset)
+      {
+        // replicated: axle, sprung mass, suspension, torque
+        energies.kinetic += wheelset->kinetic();
+        energies.internal += wheelset->spring_energy();
+        energies.damping += wheelset->damper_dissipation();
+        energies.external_work += wheelset->external_work();
+      }
+  }
+
+
+  template <class Archive>
+  void
+  ExplicitSolver::serialize(Archive &ar)
+  {
+    for (VectorType *x : {&u, &v, &f_ext, &u0})
+      ar.array(x->begin(), x->locally_owned_size());
+    ar.pod(t);
+    ar.pod(dt);
+    ar.pod(n_steps);
+    ar.pod(damping_dissipation);
+    ar.pod(boundary_work);
+    std::vector<double> states;
+    if (!Archive::is_loading)
+      for (const auto &p : prescribed)
+        {
+          states.push_back(p.u_prev);
+          states.push_back(p.v_prev);
+        }
+    ar.vector(states);
+    if (Archive::is_loading)
+      {
+        AssertThrow(states.size() == 2 * prescribed.size(),
+                    ExcMessage("The checkpoint does not fit this run (prescribed DoFs differ)."));
+        for (unsigned int i = 0; i < prescribed.size(); ++i)
+          {
+            prescribed[i].u_prev = states[2 * i];
+            prescribed[i].v_prev = states[2 * i + 1];
+          }
+        for (VectorType *x : {&u, &v, &f_ext, &u0})
+          x->update_ghost_values();
+        distribute(u);
+        distribute(v);
+      }
+  }
+
+
+
+  template void
+  ExplicitSolver::serialize(Checkpoint::Writer &);
+  template void
+  ExplicitSolver::serialize(Checkpoint::Reader &);
+
+
+  Tensor<1, dim>
+  ExplicitSolver::bore_displacement() const
+  {
+    double local[4] = {0, 0, 0, 0};
+    for (const unsigned int i : bore_dofs)
+      {
+        const unsigned int d = node_component[i];
+        local[d] += u.local_element(i);
+        if (d == 0)
+          local[3] += 1;
+      }
+    double global[4];
+    Utilities::MPI::sum(ArrayView<const double>(local, 4),
+                        mpi_communicator,
+                        ArrayView<double>(global, 4));
+    Tensor<1, dim> mean;
+    if (global[3] > 0)
+      for (unsigned int d = 0; d < dim; ++d)
+        mean[d] = global[d] / global[3];
+    return mean;
+  }
+} // namespace WheelRail
