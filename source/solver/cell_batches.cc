@@ -1,3 +1,10 @@
+/**
+ * @file cell_batches.cc
+ * The element data of ElasticOperator: per-DoF node data, the cells in
+ * batches of W (families first), B_a / V0, the hourglass vectors, volume,
+ * hourglass stiffness and damping time constant of every cell, the mesh
+ * quality and the stable time step.
+ */
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
@@ -10,13 +17,6 @@
 #include <algorithm>
 #include <limits>
 
-/**
- * @file cell_batches.cc
- * The element data of ElasticOperator: per-DoF node data, the cells in
- * batches of W (families first), B_a / V0, the hourglass vectors, volume,
- * hourglass stiffness and damping time constant of every cell, the mesh
- * quality and the stable time step.
- */
 namespace WheelRail
 {
   using namespace ElementKernel;

@@ -133,13 +133,10 @@ namespace WheelRail
   ElasticOperator::prefetch_batch(const unsigned int batch) const
   {
     // The kernel reads a batch's 39 fields (2.5 kB) in its own order, not as
-    // one stream, and the hardware prefetcher does not follow: these loads
-    // were the hottest instructions of the element loop (perf annotate of
-    // the paper run). Requested a few batches ahead they arrive while the
-    // current batch computes; the arithmetic is untouched, so are the
-    // results. Measured (./run.sh bench, 2 ranks, 1000 steps): elements
-    // 17.7 -> 14.7-15.6 s. Prefetching the gathered nodal values as well
-    // was slower (17.9 s): those mostly hit the cache already.
+    // one stream, which the hardware prefetcher does not follow. Requested a
+    // few batches ahead they arrive while the current batch computes; the
+    // arithmetic is untouched, so are the results. The gathered nodal values
+    // are not prefetched: they mostly hit the cache already.
     const char *data =
       reinterpret_cast<const char *>(&batch_data[std::size_t(batch) * Field::n_fields * W]);
     for (unsigned int offset = 0; offset < Field::n_fields * W * sizeof(double); offset += 64)

@@ -53,9 +53,11 @@ namespace WheelRail
     const DoFHandler<dim> &dof_handler = solver.get_dof_handler();
     IndexSet               relevant;
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    // the operator's hanging-node constraints and the homogeneous Dirichlet
+    // conditions of the fixed boundaries and the bore
     constraints.clear();
     constraints.reinit(relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.merge(solver.get_hanging_constraints());
     const Functions::ZeroFunction<dim> zero(dim);
     for (const auto &[id, components] : parameters.boundary.fixed)
       {
@@ -76,6 +78,7 @@ namespace WheelRail
                                                 {Geometry::BoundaryIds::wheel_bore});
     bore_dofs = bore_dofs & dof_handler.locally_owned_dofs();
     u.reinit(solver.partitioner());
+    state.reinit(solver.partitioner());
 
     // K and its AMG, once: the contact tangent stays outside (StaticTangent)
     {
@@ -108,10 +111,8 @@ namespace WheelRail
       {
         // The near null space of elasticity: the three translations and the
         // three rotations from the nodes' positions (deal.II 9.4's
-        // AdditionalData takes constant modes only). Paper mesh, static start
-        // at A on 2 ranks: CG 1,178 -> 322 iterations, 172 -> 70-85 s; peak
-        // 1,797 -> 2,456 MB per rank (threshold 0.02: 741 iterations, 136 s,
-        // 2,703 MB).
+        // AdditionalData takes constant modes only): fewer CG iterations
+        // than with the translations alone, at more memory.
         amg_data.aggregation_threshold = 1e-4;
         Teuchos::ParameterList              ml_parameters;
         std::unique_ptr<Epetra_MultiVector> constant_modes;
@@ -269,10 +270,14 @@ namespace WheelRail
     double       previous_norm = std::numeric_limits<double>::max();
     const double load_scale    = std::max(parameters.statics.axle_load, 1.);
 
-    // residual norm over the free DoFs at the displacement v
+    // residual norm over the free DoFs at the displacement v (its owned
+    // entries; ghosts and hanging DoFs follow)
     const auto evaluate = [&](const VectorType &v) {
-      solver.set_displacement(v);
-      solver.compute_residual(residual); // f_int - f_c - f_ext
+      for (unsigned int i = 0; i < v.locally_owned_size(); ++i)
+        state.local_element(i) = v.local_element(i);
+      state.update_ghost_values();
+      solver.distribute(state);
+      solver.compute_residual(state, residual); // f_int - f_c - f_ext
       double n = 0;
       for (unsigned int i = 0; i < residual.locally_owned_size(); ++i)
         if (!constraints.is_constrained(part.local_to_global(i)))
@@ -333,9 +338,7 @@ namespace WheelRail
         // 0.5 tol / |r|, which the next iterate can use; while |r| is large
         // at most 1e-2, so that the step's error stays below what Newton's
         // quadratic term leaves (Linear solver tolerance <= 1e-2 by its
-        // range). Paper case on the Grading-2 mesh, static start at A on 2
-        // ranks: the same 9 Newton iterations and state, CG 1,067 -> 505,
-        // 148 -> 74 s.
+        // range).
         double eta = parameters.statics.linear_tolerance;
         if (parameters.statics.inexact_newton)
           eta = std::clamp(0.5 * parameters.statics.newton_tolerance * load_scale / norm,
@@ -474,6 +477,9 @@ namespace WheelRail
         F0              = F1;
         d1              = d2 > gap ? d2 : gap + 0.5 * (d1 - gap);
       }
+    // the solution into the integrator, ready for an explicit run (the
+    // contact state is that of the last residual, which was at u)
+    solver.set_displacement(u);
     result.axle_displacement = d1;
     result.contact_force     = F1;
     return result;

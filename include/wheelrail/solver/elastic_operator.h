@@ -129,8 +129,9 @@ namespace WheelRail
     nodal_gradient(const VectorType            &u,
                    std::array<VectorType, dim> &gradient,
                    VectorType                  &weight) const;
-    /** Set the owned entries of @p x at the nodes of cells of @p material
-     *  (all cells if invalid id) to @p value_of_X at the node. */
+    /** Set the entries of @p x at the nodes of the locally owned cells of
+     *  @p material (all if invalid id) to @p value_of_X at the node; ghost
+     *  entries are not exchanged. */
     void
     interpolate(const std::function<Tensor<1, dim>(const Point<dim> &)> &value_of_X,
                 const types::material_id                                 material,

@@ -39,8 +39,7 @@ namespace WheelRail
    * interpolated master point, along the normal). The contact part is applied
    * outside the matrix, so K and its AMG preconditioner are built once for
    * the whole static solve; CG deals with the contact directions the
-   * preconditioner does not see (paper mesh: 1,180 CG iterations in 9 Newton
-   * steps).
+   * preconditioner does not see.
    */
   class StaticTangent
   {
@@ -75,8 +74,10 @@ namespace WheelRail
    * by delta (all other conditions as in the explicit run: fixed rail
    * bottom, rail ends fixed in x) and delta is found by secant iterations on
    * F^(2/3) (nearly linear for a Hertzian contact) so that the contact force
-   * equals the target load. The contact is frictionless here. The solution
-   * is left in the ExplicitSolver's displacement, ready for an explicit run.
+   * equals the target load. The contact is frictionless here. The residuals
+   * are those of the ExplicitSolver at the iterate (its operator, external
+   * force and contact); the solution is left in its displacement, ready for
+   * an explicit run.
    */
   class StaticContactSolver
   {
@@ -101,13 +102,14 @@ namespace WheelRail
     rigid_body_modes(const DoFHandler<dim>                &dof_handler,
                      const TrilinosWrappers::SparseMatrix &matrix);
 
-    const Parameters                 &parameters;
-    ExplicitSolver                   &solver;
-    PenaltyContact                   &contact;
-    MPI_Comm                          mpi_communicator;
-    AffineConstraints<double>         constraints;      ///< hanging + homogeneous Dirichlet
-    IndexSet                          bore_dofs;        ///< locally owned bore DoFs
-    VectorType                        u;                ///< current iterate
+    const Parameters         &parameters;
+    ExplicitSolver           &solver;
+    PenaltyContact           &contact;
+    MPI_Comm                  mpi_communicator;
+    AffineConstraints<double> constraints; ///< hanging + homogeneous Dirichlet
+    IndexSet                  bore_dofs;   ///< locally owned bore DoFs
+    VectorType                u;           ///< current iterate
+    VectorType state; ///< the displacement of a residual, ghosts and hanging DoFs set
     TrilinosWrappers::SparseMatrix    stiffness_matrix; ///< K, with the constraints condensed
     TrilinosWrappers::PreconditionAMG amg;              ///< of K, built once
     StaticTangent                     tangent;

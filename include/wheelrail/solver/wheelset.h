@@ -56,24 +56,28 @@ namespace WheelRail
     void
     start_rolling(const Point<dim> &static_axle, const double rolling_radius);
 
+    /** The axle and suspension state, in the order of the checkpoint file,
+     *  for Checkpoint::Writer and Reader. */
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar.pod(active);
+      ar.pod(displacement);
+      ar.pod(velocity);
+      for (double *x : {&theta, &omega, &d_axle_static, &d_c, &v_c, &work, &damper_loss, &radius})
+        ar.pod(*x);
+    }
     /** Write and read the axle and suspension state (checkpoints). */
     void
     save(Checkpoint::Writer &out) const
     {
-      out.pod(active);
-      out.pod(displacement);
-      out.pod(velocity);
-      for (const double x : {theta, omega, d_axle_static, d_c, v_c, work, damper_loss, radius})
-        out.pod(x);
+      const_cast<Wheelset *>(this)->serialize(out);
     }
     void
     load(Checkpoint::Reader &in)
     {
-      in.pod(active);
-      in.pod(displacement);
-      in.pod(velocity);
-      for (double *x : {&theta, &omega, &d_axle_static, &d_c, &v_c, &work, &damper_loss, &radius})
-        in.pod(*x);
+      serialize(in);
     }
 
     /** Torque about +y at time t [N m] (positive drives towards +x). */
