@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/contact/friction_law.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <cmath>
@@ -99,7 +100,7 @@ namespace WheelRail
                       "Set it to start with a deliberate overlap.");
     prm.declare_entry("Friction law",
                       "exponential",
-                      Patterns::Selection("none|constant|exponential"),
+                      Patterns::Selection("none|" + FrictionLaw::names()),
                       "'none': frictionless; 'constant': Coulomb, f = Static "
                       "friction coefficient; 'exponential': f = f_D + (f_S - "
                       "f_D) exp(-k s_n) (paper eq. 1), s_n the micro-slip "
