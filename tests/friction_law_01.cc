@@ -1,6 +1,6 @@
 // Unit test of the friction laws, the return map and the Hertz reference:
 // each value against an independent evaluation of its formula.
-#include <wheelrail/friction_law.h>
+#include <wheelrail/contact/friction_law.h>
 #include <wheelrail/hertz.h>
 
 #include <cmath>

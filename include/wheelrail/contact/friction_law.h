@@ -1,15 +1,17 @@
 /**
- * @file friction_law.h
+ * @file contact/friction_law.h
  * Friction laws f(s_n) of the local coefficient of friction as a function of
- * the micro-slip velocity s_n (SPEC 4). A new law is one class here plus a
- * name in create().
+ * the micro-slip velocity s_n (SPEC 4), and the return map onto the friction
+ * cone. Each law is one file in source/contact/friction_laws/; a new law is
+ * such a file plus its line in the registry (source/contact/friction_law.cc).
  */
-#ifndef wheelrail_friction_law_h
-#define wheelrail_friction_law_h
+#ifndef wheelrail_contact_friction_law_h
+#define wheelrail_contact_friction_law_h
 
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -19,6 +21,18 @@ namespace WheelRail
   class FrictionLaw
   {
   public:
+    /** The parameters of Contact a law may use. */
+    struct Coefficients
+    {
+      double static_coefficient;  ///< f_S [-]
+      double dynamic_coefficient; ///< f_D [-]
+      double decay;               ///< k [s/m]
+    };
+
+    /** What a law's file defines for the registry: the law for the
+     *  coefficients. */
+    using Factory = std::unique_ptr<FrictionLaw>(const Coefficients &);
+
     virtual ~FrictionLaw() = default;
 
     /** Local coefficient of friction at micro-slip velocity @p s [m/s]. */
@@ -29,9 +43,19 @@ namespace WheelRail
     virtual std::string
     name() const = 0;
 
+    /** The coefficient that fully developed sliding (s -> infinity) tends
+     *  to: the traction limit of a saturated wheel (SPEC 8). */
+    virtual double
+    sliding_coefficient() const = 0;
+
+    /** The law's coefficients as the run's summary prints them, each
+     *  number written by @p format, e.g. "f = 0.5". */
+    virtual std::string
+    describe(const std::function<std::string(double)> &format) const = 0;
+
     /**
-     * The law called @p name: "constant" (Coulomb, f = f_S) or
-     * "exponential" (paper eq. 1, f = f_D + (f_S - f_D) exp(-k s)).
+     * The law registered as @p name (see source/contact/friction_law.cc),
+     * with the coefficients it uses of those given.
      */
     static std::unique_ptr<FrictionLaw>
     create(const std::string &name,
@@ -39,63 +63,12 @@ namespace WheelRail
            const double       dynamic_coefficient,
            const double       decay);
 
-    /** Names accepted by create(), as a Patterns::Selection string. */
+    /** Names accepted by create(), in the registry's order, as a
+     *  Patterns::Selection string ("constant|exponential"). */
     static std::string
-    names()
-    {
-      return "constant|exponential";
-    }
+    names();
   };
 
-
-
-  /** Coulomb friction with a constant coefficient. */
-  class ConstantFriction : public FrictionLaw
-  {
-  public:
-    explicit ConstantFriction(const double f)
-      : f(f)
-    {}
-    double
-    coefficient(const double) const override
-    {
-      return f;
-    }
-    std::string
-    name() const override
-    {
-      return "constant";
-    }
-
-  private:
-    const double f;
-  };
-
-
-
-  /** Velocity-dependent friction of Zhao & Li (2016), eq. (1). */
-  class ExponentialFriction : public FrictionLaw
-  {
-  public:
-    ExponentialFriction(const double f_static, const double f_dynamic, const double decay)
-      : f_s(f_static)
-      , f_d(f_dynamic)
-      , k(decay)
-    {}
-    double
-    coefficient(const double s) const override
-    {
-      return f_d + (f_s - f_d) * std::exp(-k * s);
-    }
-    std::string
-    name() const override
-    {
-      return "exponential";
-    }
-
-  private:
-    const double f_s, f_d, k;
-  };
 
 
   /**

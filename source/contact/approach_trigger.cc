@@ -1,5 +1,5 @@
 /**
- * @file contact_trigger.cc
+ * @file contact/approach_trigger.cc
  * The parts of PenaltyContact that guard the candidate lists: the approach
  * bound, which calls for a search before a slave and a master face that are
  * not candidates can meet, and the check of the initial overlap.
@@ -49,8 +49,8 @@
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 
-#include <wheelrail/contact.h>
-#include <wheelrail/geometry.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/mesh/geometry.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/parameter_file.h>
+#include <wheelrail/parameters/parameter_file.h>
 
 #include <filesystem>
 #include <fstream>

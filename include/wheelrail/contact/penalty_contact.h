@@ -1,0 +1,458 @@
+/**
+ * @file contact/penalty_contact.h
+ * Penalty node-to-segment contact with friction (SPEC 4): slave nodes on one
+ * boundary against the bilinear faces of another, LS-DYNA style.
+ *
+ * Parallel design: the contact state is replicated, its computation is
+ * shared. Every rank knows the list of all slave nodes and master faces
+ * (small: surfaces only). At a search, the current positions of all contact
+ * nodes are gathered and the candidate slaves and faces (within the search
+ * margin) are chosen; at every step only the candidates' positions are
+ * gathered (one allgatherv). Each rank then computes the closest point,
+ * penalty force and friction return map of its block of the candidate
+ * slaves (ordered by position), with the face bounds and averaged nodal
+ * normals of the faces its block needs (computed on first use), these
+ * states are exchanged (one allgatherv), and
+ * every rank sums the totals and adds the forces on the DoFs it owns, in the
+ * same slave order. Results are therefore independent of the number of
+ * ranks, and a slave node and its master face may live on any ranks.
+ */
+#ifndef wheelrail_contact_penalty_contact_h
+#define wheelrail_contact_penalty_contact_h
+
+#include <deal.II/base/partitioner.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+
+#include <wheelrail/checkpoint.h>
+#include <wheelrail/contact/friction_law.h>
+#include <wheelrail/parameters/parameters.h>
+#include <wheelrail/stopwatch.h>
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace WheelRail
+{
+  /** State of one slave node, available to output and post-processing. */
+  struct ContactNodeState
+  {
+    Point<dim>     X;                  ///< reference position [m]
+    Point<dim>     x;                  ///< current position [m]
+    double         area       = 0;     ///< tributary area [m^2]
+    bool           in_contact = false; ///< normal nodal force > 0 (paper eq. 4)
+    double         gap        = 0;     ///< n.(x_s - x_c) [m], < 0 = penetration
+    Tensor<1, dim> normal;             ///< outward normal of the master face
+    double         normal_force = 0;   ///< |F_n| [N]
+    Tensor<1, dim> tangential_force;   ///< F_t on the slave [N]
+    double         slip_velocity = 0;  ///< micro-slip s_n = |de| / dt [m/s]
+    /** de / dt: the slave's velocity relative to the master material under
+     *  it (elastic spring rate plus slip) [m/s]; |slip_rate| = s_n. */
+    Tensor<1, dim> slip_rate;
+    double         cof      = 0;     ///< local coefficient of friction
+    bool           slipping = false; ///< the return map was active
+    /** Friction memory: master face and face coordinates of the contact point. */
+    int        face = -1;
+    double     xi = 0, eta = 0;
+    double     mass = 0;   ///< lumped nodal mass (contact damping) [kg]
+    Point<dim> x_previous; ///< position at the previous step
+    double     gap_previous = 0;
+    /** Energy dissipated at this node in the last step by friction and by
+     *  contact damping [J] (summed in slave order into the totals). */
+    double friction_loss = 0;
+    double damping_work  = 0;
+
+    double
+    pressure() const
+    {
+      return area > 0 ? normal_force / area : 0.;
+    }
+  };
+
+  /** Contact results carried over to a master (rail-top) node. */
+  struct MasterNodeState
+  {
+    Point<dim>     X;                 ///< reference position [m]
+    double         area         = 0;  ///< tributary area on the master surface [m^2]
+    double         normal_force = 0;  ///< sum of N_j |F_n| of the slaves on its faces [N]
+    Tensor<1, dim> tangential_force;  ///< the same for F_t (on the slave side) [N]
+    double         slip_velocity = 0; ///< N_j-weighted mean of the slaves' s_n [m/s]
+    double         cof           = 0; ///< N_j-weighted mean local COF
+  };
+
+  /** An active slave/master pair for the implicit tangent. */
+  struct ContactPair
+  {
+    types::global_dof_index slave;     ///< x-DoF of the slave node
+    types::global_dof_index master[4]; ///< x-DoFs of the face corners
+    double                  shape[4];  ///< N_j at the contact point
+    Tensor<1, dim>          normal;
+    double                  stiffness; ///< penalty k [N/m]
+  };
+
+  /** Totals over all slave nodes. */
+  struct ContactSummary
+  {
+    Tensor<1, dim> force;               ///< on the (first pass's) slave body [N]
+    unsigned int   n_contact       = 0; ///< nodes with F_n > 0
+    unsigned int   n_slip          = 0; ///< nodes where the return map was active
+    unsigned int   n_violation     = 0; ///< |F_t| > f |F_n| (must stay 0)
+    double         elastic_energy  = 0; ///< 1/2 k g^2 + 1/2 |F_t|^2 / k_t [J]
+    double         max_penetration = 0; ///< [m]
+    /** Mean over the contact nodes of the slave's displacement relative to
+     *  the material point of the master under it [m]: elastic spring
+     *  extension plus accumulated slip. */
+    Tensor<1, dim> relative_displacement;
+  };
+
+  /** Wall seconds of this rank in the parts of PenaltyContact::add_forces(). */
+  struct ContactTimes
+  {
+    double search    = 0; ///< candidate searches (their position gather included)
+    double wait      = 0; ///< for the other ranks before the position gather (imbalance)
+    double positions = 0; ///< position gather of the candidates between searches
+    double slaves    = 0; ///< closest points, penalty and friction of this rank's block
+    double exchange  = 0; ///< the blocks' states to every rank
+    double forces    = 0; ///< totals, pairs and the nodal forces
+  };
+
+  /**
+   * Penalty contact between the slave boundary and the master boundary
+   * (and back, with two-pass contact).
+   */
+  class PenaltyContact
+  {
+  public:
+    /** Write the contact and friction state (replicated on every rank)
+     *  and the search state, so that a restart continues exactly. */
+    void
+    save(Checkpoint::Writer &out) const;
+    /** Read what save() wrote, for the same mesh and rank count. */
+    void
+    load(Checkpoint::Reader &in);
+    /** The checkpointed state, listed once for both directions (@p ar a
+     *  Checkpoint::Writer or Reader); after reading, the search structures
+     *  that follow from it are rebuilt. */
+    template <class Archive>
+    void
+    serialize(Archive &ar);
+
+    PenaltyContact(const ContactParameters  &contact,
+                   const MaterialParameters &material,
+                   MPI_Comm                  comm);
+
+    /** Collect slave nodes and master faces of the mesh. */
+    void
+    setup(const DoFHandler<dim>                                    &dof_handler,
+          const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
+          const LinearAlgebra::distributed::Vector<double>         &lumped_mass);
+
+    /**
+     * Add the contact forces for the displacement @p u (ghosted) to the
+     * owned entries of @p f, with the sign of internal forces (f -= f_c).
+     * With @p advance the friction state and the micro-slip are updated for
+     * a step of length @p dt; without, friction is left out (static solve).
+     */
+    void
+    add_forces(const LinearAlgebra::distributed::Vector<double> &u,
+               const double                                      dt,
+               const bool                                        advance,
+               LinearAlgebra::distributed::Vector<double>       &f);
+
+    /** Active pairs of the last add_forces() (replicated on all ranks). */
+    const std::vector<ContactPair> &
+    active_pairs() const
+    {
+      return pairs;
+    }
+    /** Slave node states of the first pass (replicated on all ranks). */
+    const std::vector<ContactNodeState> &
+    slave_states() const
+    {
+      return passes.front().slaves;
+    }
+    /**
+     * The contact state carried over to the master nodes of the first pass
+     * (the rail top): forces distributed with the shape functions as the
+     * penalty forces are, slip velocity and COF averaged with them.
+     */
+    std::vector<MasterNodeState>
+    master_states() const;
+
+    /** Totals of the last add_forces(). */
+    const ContactSummary &
+    summary() const
+    {
+      return totals;
+    }
+    /** Energy dissipated by contact damping so far [J]. */
+    double
+    damping_dissipation() const
+    {
+      return damping_loss;
+    }
+    /** Friction dissipation accumulated so far [J]. */
+    double
+    friction_dissipation() const
+    {
+      return dissipation;
+    }
+    /** Number of candidate searches so far. */
+    unsigned int
+    n_searches() const
+    {
+      return searches;
+    }
+    /** Candidate slaves and candidate slave-face pairs of the last search
+     *  (all passes). */
+    std::pair<unsigned int, unsigned int>
+    n_candidates() const
+    {
+      std::pair<unsigned int, unsigned int> n(0, 0);
+      for (const Pass &pass : passes)
+        {
+          n.first += pass.candidate_slaves.size();
+          n.second += pass.face_lists.size();
+        }
+      return n;
+    }
+    /** Searches so far that the approach bound (contact/approach_trigger.cc)
+     *  called for, and no other trigger. */
+    unsigned int
+    n_approach_searches() const
+    {
+      return approach_searches;
+    }
+    /**
+     * The deepest penetration [m] that a slave node had at the step its
+     * contact began (a slave found in contact that was not at the step
+     * before), over all steps so far and all ranks. A search that never
+     * misses an approaching body finds every contact within about one
+     * step's relative motion of the surfaces. Collective.
+     */
+    double
+    deepest_new_contact() const;
+    /** Wall seconds spent in searches (candidate rebuilds) so far. */
+    double
+    search_seconds() const
+    {
+      return search_time;
+    }
+    /** Times of the calls since the last reset_times(). */
+    const ContactTimes &
+    times() const
+    {
+      return timing;
+    }
+    void
+    reset_times()
+    {
+      timing = ContactTimes();
+    }
+    /** h_ref of Contact/Penalty stiffness = area [m] (0 with 'segment'). */
+    double
+    penalty_reference_length() const
+    {
+      return reference_length;
+    }
+    const FrictionLaw *
+    friction_law() const
+    {
+      return law.get();
+    }
+
+  private:
+    struct MasterFace
+    {
+      unsigned int node[4];   ///< contact-node indices, lexicographic
+      double       stiffness; ///< k = SF K A^2 / V
+      double       sign;      ///< orientation making x_xi x x_eta outward
+    };
+    /**
+     * What a slave's projection onto a master face can be, bounded cheaply
+     * (see face_bound()): the face extended to |xi|, |eta| <= 1.1
+     * lies in the ball (centre, radius), and its normals within the angle
+     * asin(sin_angle) of @p normal.
+     */
+    struct FaceBound
+    {
+      Point<dim>     centre;
+      Tensor<1, dim> normal; ///< unit normal at xi = eta = 0
+      double         radius     = 0;
+      double         sin_angle  = 0;
+      bool           usable     = false; ///< nearly flat and not degenerate
+      unsigned long  evaluation = 0;     ///< add_forces() call it was computed in
+    };
+    struct Pass
+    {
+      std::vector<unsigned int>     slave_node; ///< contact-node index per slave
+      std::vector<ContactNodeState> slaves;
+      std::vector<MasterFace>       faces;
+      std::vector<unsigned int>     candidate_slaves;
+      std::vector<unsigned int>     candidate_faces;
+      std::vector<unsigned int>     face_offsets; ///< CSR: slave -> faces
+      std::vector<unsigned int>     face_lists;
+      std::vector<FaceBound>        bounds; ///< per face, computed when first needed
+    };
+    /** A candidate master face at a contact node: what its averaged normal sums. */
+    struct NormalEntry
+    {
+      unsigned int pass;
+      unsigned int face;
+      unsigned int corner;
+    };
+
+    void
+    collect_pass(const DoFHandler<dim>   &dof_handler,
+                 const types::boundary_id slave_id,
+                 const types::boundary_id master_id,
+                 Pass                    &pass);
+    unsigned int
+    node_index(const types::global_dof_index dof, const Point<dim> &X);
+    /** Every rank's @p send, concatenated in rank order, into @p recv on
+     *  every rank (MPI type @p type of T). */
+    template <typename T>
+    void
+    all_gather_concatenated(const std::vector<T> &send,
+                            const MPI_Datatype    type,
+                            std::vector<T>       &recv);
+    void
+    search(const LinearAlgebra::distributed::Vector<double> &u);
+    /** The clearances and motion allowances of this rank's contact nodes
+     *  for approach_bound_exceeded(), from the positions at the last
+     *  search (contact/approach_trigger.cc). */
+    void
+    plan_approach_trigger();
+    /**
+     * Whether a slave and a master face that are not candidates could have
+     * come closer than (1 - Rebuild fraction) x Search margin since the last
+     * search, judged from this step's motion of all contact nodes; reduced
+     * over the ranks (one allreduce, where the ranks meet after their
+     * element loops). Stops the run when the nodes move too far in one step
+     * for any search to see a crossing. The local part is timed in
+     * @p clock as positions, the reduction as wait.
+     */
+    bool
+    approach_bound_exceeded(const LinearAlgebra::distributed::Vector<double> &u,
+                            const bool                                        advance,
+                            Clock::time_point                                &clock);
+    /** At the first evaluation after setup(): stop the run when a slave
+     *  penetrates its master face deeper than the faceting of the surfaces
+     *  explains (contact/approach_trigger.cc). */
+    void
+    check_initial_overlap() const;
+    /** The FaceBound of face @p f of @p pass at the current positions,
+     *  computed at its first use in this evaluation. */
+    const FaceBound &
+    face_bound(Pass &pass, const unsigned int f);
+    /** The axis-aligned box (lowest, highest corner) of master face @p face
+     *  with its nodes at @p x. */
+    static std::pair<Point<dim>, Point<dim>>
+    face_box(const MasterFace &face, const std::vector<Point<dim>> &x);
+    /** The averaged normal of the candidate master faces at contact node
+     *  @p n at the current positions, computed at its first use in this
+     *  evaluation. */
+    const Tensor<1, dim> &
+    averaged_normal(const unsigned int n);
+    /** The candidate faces at each contact node (after a search or load). */
+    void
+    build_normal_adjacency();
+    /** The candidates [first, second) of @p n that rank @p rank computes. */
+    std::pair<unsigned int, unsigned int>
+    candidate_block(const unsigned int n, const unsigned int rank) const;
+    /** candidate_block() of this rank. */
+    std::pair<unsigned int, unsigned int>
+    own_candidates(const unsigned int n) const;
+    /** What gather_positions() sends and receives for a set of nodes:
+     *  fixed from one search to the next. */
+    struct GatherPlan
+    {
+      std::vector<unsigned int> local_dof;      ///< this rank's nodes: first local DoF, ascending
+      std::vector<Point<dim>>   X;              ///< their reference positions
+      std::vector<unsigned int> nodes;          ///< all ranks' nodes in the order they arrive
+      std::vector<int>          counts, displs; ///< per rank, in doubles
+    };
+    void
+    plan_gather(const std::vector<unsigned int> &nodes, GatherPlan &plan);
+    /** node_x = X + u of the plan's nodes on every rank. */
+    void
+    gather_positions(const LinearAlgebra::distributed::Vector<double> &u, const GatherPlan &plan);
+    /** Closest point, penalty force and friction of this rank's share of
+     *  the candidate slaves of @p pass (a block): their states only. */
+    void
+    compute_slaves(Pass &pass, const double dt, const bool advance);
+    /** Every rank computed its share of the candidates: gather all. */
+    void
+    exchange_states(Pass &pass, const bool advance);
+    /** The state of a candidate slave at @p xs that is not in contact
+     *  (gap @p gap >= 0, or no face within reach), as compute_slaves()
+     *  leaves it. */
+    static void
+    separate(ContactNodeState &state, const Point<dim> &xs, const double gap, const bool advance);
+    /** Totals, dissipation and active pairs from the states, in slave order. */
+    void
+    accumulate(const Pass &pass, const bool advance);
+
+    const ContactParameters     &prm;
+    MPI_Comm                     mpi_communicator;
+    std::unique_ptr<FrictionLaw> law;
+    double                       bulk_modulus;
+    double                       reference_length = 0; ///< h_ref of the 'area' penalty [m]
+    std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
+
+    // contact nodes: slaves and face corners of all passes (replicated)
+    std::vector<types::global_dof_index> node_dof;
+    std::vector<Point<dim>>              node_X;
+    std::vector<Point<dim>>              node_x;            ///< current positions
+    std::vector<Point<dim>>              node_x_search;     ///< at the last search
+    std::vector<Tensor<1, dim>>          node_normal;       ///< averaged master normals
+    std::vector<unsigned long>           normal_evaluation; ///< when node_normal[n] was computed
+    std::vector<unsigned int>            normal_offsets;    ///< CSR: node -> NormalEntry
+    std::vector<NormalEntry>             normal_entries;
+    unsigned long                        evaluation = 0; ///< add_forces() calls
+    std::vector<double>                  node_area;      ///< master tributary area (first pass)
+    std::vector<unsigned int>            active_nodes;   ///< gathered every step
+    GatherPlan                           all_gather, active_gather;
+    std::vector<std::pair<types::global_dof_index, unsigned int>> dof_to_node;
+
+    /** A contact node owned by this rank, for approach_bound_exceeded(). */
+    struct TriggerNode
+    {
+      unsigned int   local_dof; ///< first local DoF
+      Tensor<1, dim> u_search;  ///< x - X at the last search
+      Tensor<1, dim> dx;        ///< x - x_search at the last evaluation
+      /** Motion allowance e [m] as slave (2 p) and as master-face corner
+       *  (2 p + 1) of pass p; the largest double where it has no role. */
+      double e[4];
+    };
+    std::vector<TriggerNode> trigger_nodes;             ///< ascending local DoFs
+    bool                     step_motion_known = false; ///< TriggerNode::dx is of the last step
+    bool                     overlap_checked   = false; ///< check_initial_overlap() done
+    unsigned int             approach_searches = 0;
+    double new_contact_depth = 0; ///< this rank's block, see deepest_new_contact()
+
+    std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
+    std::vector<double>           exchange_gaps;   ///< (in contact, gap) per candidate
+    // workspaces of gather_positions() and exchange_states(), kept so that a
+    // step allocates nothing
+    std::vector<double>      gather_send, gather_recv;
+    std::vector<int>         exchange_counts, exchange_displs;
+    std::vector<Pass>        passes;
+    std::vector<ContactPair> pairs;
+    ContactSummary           totals;
+    double                   dissipation        = 0;
+    double                   damping_loss       = 0;
+    unsigned long            steps_since_search = 0;
+    bool                     need_search        = true;
+    unsigned int             searches           = 0;
+    double                   search_time        = 0;
+    ContactTimes             timing;
+  };
+} // namespace WheelRail
+
+#endif

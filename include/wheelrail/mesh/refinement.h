@@ -1,0 +1,133 @@
+/**
+ * @file mesh/refinement.h
+ * The local refinement of the wheel and rail towards the solution zone and
+ * the rolling path, in the chart coordinates of each body (SPEC 1), and
+ * the guard of the refined mesh's size.
+ */
+#ifndef wheelrail_mesh_refinement_h
+#define wheelrail_mesh_refinement_h
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <wheelrail/parameters/parameters.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace WheelRail
+{
+  namespace Geometry
+  {
+    namespace internal
+    {
+      /** Coarse cell size that halves exactly onto h_min. */
+      double
+      effective_coarse_size(const GeometryParameters &p);
+
+
+
+      /** Distance of (a, b, c) to the box [a0,a1] x [b0,b1] x [c0,c1]. */
+      inline double
+      box_distance(const double a,
+                   const double b,
+                   const double c,
+                   const double a0,
+                   const double a1,
+                   const double b0,
+                   const double b1,
+                   const double c0,
+                   const double c1)
+      {
+        const double da = std::max({a0 - a, 0., a - a1});
+        const double db = std::max({b0 - b, 0., b - b1});
+        const double dc = std::max({c0 - c, 0., c - c1});
+        return std::sqrt(da * da + db * db + dc * dc);
+      }
+
+
+
+      /**
+       * A box [lo, hi] in chart coordinates: the zone, the rolling path,
+       * or the bounding box of a cell's vertices.
+       */
+      struct ChartBox
+      {
+        std::array<double, 3> lo;
+        std::array<double, 3> hi;
+
+        /** Distance of the point @p c to the box (0 inside). */
+        double
+        distance(const std::array<double, 3> &c) const
+        {
+          return box_distance(c[0], c[1], c[2], lo[0], hi[0], lo[1], hi[1], lo[2], hi[2]);
+        }
+
+        /** Whether the two boxes share a volume (touching does not count). */
+        bool
+        overlaps(const ChartBox &other) const
+        {
+          const double eps = 1e-9; // [m]
+          for (unsigned int d = 0; d < 3; ++d)
+            if (other.hi[d] <= lo[d] + eps || other.lo[d] >= hi[d] - eps)
+              return false;
+          return true;
+        }
+      };
+
+
+
+      /** The solution zone and the rolling path of one body, in chart space. */
+      struct RefinementBoxes
+      {
+        bool     has_zone = false;
+        ChartBox zone;
+        bool     has_path = false;
+        ChartBox path;
+      };
+
+
+
+      /** The solution zone and the rolling path of body @p material in chart
+       *  space (none for the bar and the block on plate). */
+      RefinementBoxes
+      refinement_boxes(const GeometryParameters &p, const types::material_id material);
+
+
+
+      /**
+       * Refine the wheel and rail locally to the target sizes of
+       * Geometry/Mesh (SPEC 1): cycles of refinement until no cell is larger
+       * than its target, each checked first by check_cell_estimate().
+       */
+      void
+      refine_wheel_and_rail(const GeometryParameters                  &p,
+                            parallel::distributed::Triangulation<dim> &triangulation);
+
+
+
+      /**
+       * Stop the run when the final cell count @p estimate of the
+       * refinement, estimated before cycle @p cycle, is more than deal.II
+       * numbers on a rank or needs more than the @p memory bytes of
+       * physical memory of the machines of @p comm.
+       */
+      void
+      check_cell_estimate(const GeometryParameters &p,
+                          const double              estimate,
+                          const unsigned int        cycle,
+                          const MPI_Comm            comm,
+                          const double              memory);
+
+
+
+      /** Physical memory of the machines that run @p comm [bytes]. */
+      double
+      physical_memory(const MPI_Comm comm);
+    } // namespace internal
+  }   // namespace Geometry
+} // namespace WheelRail
+
+#endif

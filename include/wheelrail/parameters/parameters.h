@@ -1,0 +1,335 @@
+/**
+ * @file parameters/parameters.h
+ * Run-time parameters of wheelrail, one plain struct per subsystem.
+ *
+ * Every struct has a static declare_parameters(), a parse_parameters() and
+ * (where values depend on each other) a check(). Nothing reads the
+ * ParameterHandler after Parameters::parse() returned. All values are SI
+ * (m, kg, s, N, Pa) inside the program; every entry's help text gives its
+ * unit and allowed range.
+ */
+#ifndef wheelrail_parameters_parameters_h
+#define wheelrail_parameters_parameters_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace WheelRail
+{
+  using namespace dealii;
+
+  /** Space dimension: wheelrail is a 3D program only. */
+  constexpr unsigned int dim = 3;
+
+  /** What is computed and where it goes ("subsection Problem"). */
+  struct ProblemParameters
+  {
+    /** "wheel and rail" (the paper's model) or "bar" (verification bar). */
+    std::string geometry;
+    /** "explicit dynamics" or one of the static verification modes. */
+    std::string mode;
+    std::string output_directory;
+    /** Reproducible screen output for the test suite: no timings, no paths. */
+    bool test_mode;
+    /** Parse, build the mesh, print the summary and stop. */
+    bool dry_run;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Wheel, rail and mesh refinement (SPEC section 1). */
+  struct GeometryParameters
+  {
+    // wheel
+    double       wheel_radius;
+    double       bore_radius;
+    double       tread_width;
+    double       wheel_centre_x;
+    double       initial_gap;
+    unsigned int wheel_circumferential_cells;
+    // rail
+    double rail_head_height;
+    double rail_head_width;
+    double rail_profile_radius;
+    double rail_start_x;
+    double rail_end_x;
+    // mesh
+    double coarse_cell_size;
+    double h_min;
+    double zone_length;
+    double zone_half_width;
+    double zone_depth;
+    double grading;
+    bool   refine_wheel;
+    double path_cell_size; ///< along the whole rolling path, 0 = off [m]
+    /** Coarse cells that refine onto h_min in every direction over the zone. */
+    bool align_zone;
+    // bar (verification geometry)
+    double                    bar_length;
+    double                    bar_width;
+    double                    bar_height;
+    std::vector<unsigned int> bar_cells;
+    double                    bar_distortion;
+    // block on plate (contact verification geometry)
+    Tensor<1, 3>              plate_size;
+    std::vector<unsigned int> plate_cells;
+    Tensor<1, 3>              block_size;
+    std::vector<unsigned int> block_cells;
+    double                    block_x;
+    double                    block_gap;
+
+    /** Height of the undeformed wheel centre above O. */
+    double
+    wheel_centre_z() const
+    {
+      return wheel_radius + initial_gap;
+    }
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+    void
+    check() const;
+  };
+
+  /** Linear elastic material, the same for wheel and rail (SPEC 2). */
+  struct MaterialParameters
+  {
+    double youngs_modulus;
+    double poisson_ratio;
+    double density;
+
+    double
+    lambda() const
+    {
+      return youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    }
+    double
+    mu() const
+    {
+      return youngs_modulus / (2. * (1. + poisson_ratio));
+    }
+    /** Dilatational wave speed sqrt((lambda+2mu)/rho). */
+    double
+    wave_speed() const;
+    /** Bar wave speed sqrt(E/rho). */
+    double
+    bar_wave_speed() const;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Element, damping and central-difference integration (SPEC 2). */
+  struct SolverParameters
+  {
+    double       end_time;
+    double       time_step; ///< 0 = automatic
+    double       courant_factor;
+    double       hourglass_coefficient;
+    std::string  damping_model; ///< "none", "stiffness", "Rayleigh"
+    double       stiffness_damping_coefficient;
+    double       rayleigh_beta;
+    Tensor<1, 3> gravity;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Dirichlet conditions and prescribed motions. */
+  struct BoundaryParameters
+  {
+    /** boundary id -> fixed components as a mask "xyz". */
+    std::map<types::boundary_id, std::string> fixed;
+    /** Fixed boundaries holds its default (the rail's ids 11 and 12), which
+     *  the other geometries do not have: their runs ignore it. */
+    bool fixed_is_default = true;
+    /** Boundary ids whose velocity is prescribed by the function below. */
+    std::vector<types::boundary_id> prescribed_velocity_ids;
+    /** Expression of the prescribed velocity, "vx; vy; vz" in (x,y,z,t). */
+    std::string prescribed_velocity_expression;
+    std::string prescribed_velocity_constants;
+    /** "free", "fixed" or "spinning axle" for the wheel bore. */
+    std::string wheel_bore;
+    /** Boundary ids loaded by the applied force (empty = none). */
+    std::vector<types::boundary_id> applied_force_ids;
+    /** Total force "Fx; Fy; Fz" [N] as functions of t, spread by area. */
+    std::string applied_force_expression;
+    std::string applied_force_constants;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Penalty node-to-segment contact and friction (SPEC 4). */
+  struct ContactParameters
+  {
+    bool               enabled;
+    types::boundary_id slave_boundary;
+    types::boundary_id master_boundary;
+    bool               two_pass;
+    double             penalty_scale;
+    std::string        penalty_stiffness;        ///< "segment" or "area"
+    double             penalty_reference_length; ///< h_ref of "area" [m], 0: finest master cell
+    double             tangential_factor;
+    double             damping_ratio;
+    unsigned int       search_interval;
+    double             search_margin;
+    double             rebuild_fraction;
+    double             initial_overlap_tolerance; ///< [m], see check_initial_overlap()
+    std::string        friction_law;
+    double             static_coefficient;
+    double             dynamic_coefficient;
+    double             decay;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Axle, primary suspension, sprung mass and driving torque (SPEC 3). */
+  struct WheelsetParameters
+  {
+    double unsprung_mass;
+    double sprung_mass;
+    double suspension_stiffness;
+    double suspension_damping;
+    double axle_inertia;
+    double rolling_speed;
+    double traction_coefficient;
+    double torque_ramp_time;
+    bool   static_start;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** The implicit static contact solve (SPEC 5.2). */
+  struct StaticParameters
+  {
+    double       axle_load;
+    double       load_tolerance;
+    double       newton_tolerance;
+    unsigned int max_newton_iterations;
+    double       linear_tolerance;
+    bool         inexact_newton; ///< CG tolerance from the Newton residual
+    std::string  amg_null_space; ///< "translations" or "rigid body modes"
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Initial velocity fields. */
+  struct InitialParameters
+  {
+    Tensor<1, 3> wheel_velocity;
+    double       wheel_angular_velocity; ///< about +y, rad/s
+    std::string  velocity_expression;    ///< "vx; vy; vz" in (x,y,z)
+    std::string  velocity_constants;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Screen reports, statistics file, VTU snapshots, probes. */
+  struct OutputParameters
+  {
+    unsigned int  report_interval;
+    unsigned int  statistics_interval;
+    unsigned int  vtu_interval;
+    std::string   vtu_compression; ///< "fast", "best" or "none"
+    Point<3>      probe_point;
+    unsigned int  probe_component;
+    unsigned int  timing_warmup_steps;
+    double        divergence_limit;    ///< largest relative energy balance error
+    unsigned int  checkpoint_interval; ///< steps between checkpoints, 0 = none
+    double        checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
+    unsigned long stop_after_step;     ///< stop (with a checkpoint) after this step, 0 = never
+    bool          resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /** Checks against analytic solutions, used by the test suite. */
+  struct VerificationParameters
+  {
+    std::string  check;
+    Tensor<2, 3> displacement_gradient;
+    double       rotation_angle; ///< rad
+    Tensor<1, 3> rotation_axis;  ///< unit vector
+    double       tolerance;
+    double       wave_threshold;
+    double       hourglass_limit;
+    bool         round_off_sensitive; ///< test mode prints robust values only
+    bool         bar_clamped;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+  /**
+   * A three-component muparser function of @p variables ("x,y,z" or
+   * "x,y,z,t") from @p expression ("vx; vy; vz") and @p constants
+   * ("name=value, ..."; pi is predefined). It is evaluated once here so
+   * that a malformed expression is reported with the name of its
+   * parameter @p entry.
+   */
+  std::unique_ptr<FunctionParser<3>>
+  make_vector_function(const std::string &expression,
+                       const std::string &constants,
+                       const std::string &variables,
+                       const std::string &entry);
+
+  /** All parameters of a run. */
+  struct Parameters
+  {
+    ProblemParameters      problem;
+    GeometryParameters     geometry;
+    MaterialParameters     material;
+    SolverParameters       solver;
+    BoundaryParameters     boundary;
+    InitialParameters      initial;
+    ContactParameters      contact;
+    StaticParameters       statics;
+    WheelsetParameters     wheelset;
+    OutputParameters       output;
+    VerificationParameters verification;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /** Read @p filename into @p prm and fill all structs; throws on bad input. */
+    void
+    parse(ParameterHandler &prm, const std::string &filename);
+  };
+} // namespace WheelRail
+
+#endif

@@ -1,0 +1,438 @@
+/**
+ * @file contact/penalty_contact.cc
+ * PenaltyContact: collecting the slave nodes and master faces of the mesh,
+ * one evaluation of the contact forces (add_forces()), the contact state
+ * carried to the master nodes, and the checkpoint of the contact state.
+ */
+
+#include <deal.II/base/mpi.h>
+
+#include <wheelrail/contact/bilinear_face.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/stopwatch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace WheelRail
+{
+  using namespace ContactGeometry;
+
+
+
+  PenaltyContact::PenaltyContact(const ContactParameters  &contact,
+                                 const MaterialParameters &material,
+                                 MPI_Comm                  comm)
+    : prm(contact)
+    , mpi_communicator(comm)
+    , bulk_modulus(material.lambda() + 2. / 3. * material.mu())
+  {
+    if (prm.friction_law != "none")
+      law = FrictionLaw::create(prm.friction_law,
+                                prm.static_coefficient,
+                                prm.dynamic_coefficient,
+                                prm.decay);
+  }
+
+
+
+  unsigned int
+  PenaltyContact::node_index(const types::global_dof_index dof, const Point<dim> &X)
+  {
+    const auto it =
+      std::lower_bound(dof_to_node.begin(),
+                       dof_to_node.end(),
+                       std::make_pair(dof, 0u),
+                       [](const auto &a, const auto &b) { return a.first < b.first; });
+    if (it != dof_to_node.end() && it->first == dof)
+      return it->second;
+    const unsigned int index = node_dof.size();
+    node_dof.push_back(dof);
+    node_X.push_back(X);
+    dof_to_node.insert(it, std::make_pair(dof, index));
+    return index;
+  }
+
+
+
+  void
+  PenaltyContact::collect_pass(const DoFHandler<dim>   &dof_handler,
+                               const types::boundary_id slave_id,
+                               const types::boundary_id master_id,
+                               Pass                    &pass)
+  {
+    // local contributions, packed as doubles for one all_gather each:
+    // slaves (dof, X, partial area), faces (4 dofs, 4 X, k, sign)
+    std::vector<double> slaves, faces;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary())
+            {
+              const auto   face = cell->face(f);
+              const double area = 0.5 * cross_product_3d(face->vertex(3) - face->vertex(0),
+                                                         face->vertex(2) - face->vertex(1))
+                                          .norm();
+              if (face->boundary_id() == slave_id)
+                for (unsigned int v = 0; v < 4; ++v)
+                  {
+                    slaves.push_back(face->vertex_dof_index(v, 0));
+                    for (unsigned int d = 0; d < dim; ++d)
+                      slaves.push_back(face->vertex(v)[d]);
+                    slaves.push_back(0.25 * area);
+                  }
+              if (face->boundary_id() == master_id)
+                {
+                  for (unsigned int v = 0; v < 4; ++v)
+                    {
+                      faces.push_back(face->vertex_dof_index(v, 0));
+                      for (unsigned int d = 0; d < dim; ++d)
+                        faces.push_back(face->vertex(v)[d]);
+                    }
+                  const Tensor<1, dim> n = cross_product_3d(face->vertex(1) - face->vertex(0),
+                                                            face->vertex(2) - face->vertex(0));
+                  faces.push_back(area);
+                  faces.push_back(cell->measure());
+                  faces.push_back(n * (face->center() - cell->center()) > 0 ? 1. : -1.);
+                }
+            }
+
+    // slaves: sum the partial areas of shared nodes, order by position
+    std::map<types::global_dof_index, std::pair<Point<dim>, double>> slave_map;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, slaves))
+      for (unsigned int i = 0; i < part.size(); i += 5)
+        {
+          auto &entry = slave_map[static_cast<types::global_dof_index>(part[i])];
+          entry.first = Point<dim>(part[i + 1], part[i + 2], part[i + 3]);
+          entry.second += part[i + 4];
+        }
+    std::vector<std::tuple<Point<dim>, types::global_dof_index, double>> sorted_slaves;
+    for (const auto &s : slave_map)
+      sorted_slaves.emplace_back(s.second.first, s.first, s.second.second);
+    std::sort(sorted_slaves.begin(), sorted_slaves.end(), [](const auto &a, const auto &b) {
+      return lexicographic_less(std::get<0>(a), std::get<0>(b));
+    });
+    for (const auto &s : sorted_slaves)
+      {
+        ContactNodeState state;
+        state.X    = std::get<0>(s);
+        state.x    = state.X;
+        state.area = std::get<2>(s);
+        pass.slave_node.push_back(node_index(std::get<1>(s), state.X));
+        pass.slaves.push_back(state);
+      }
+
+    // faces, ordered by centroid
+    std::vector<std::pair<Point<dim>, std::vector<double>>> sorted_faces;
+    double thinnest = std::numeric_limits<double>::max(); // smallest V / A
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, faces))
+      for (unsigned int i = 0; i < part.size(); i += 19)
+        {
+          Point<dim> c;
+          for (unsigned int v = 0; v < 4; ++v)
+            c += 0.25 * Point<dim>(part[i + 4 * v + 1], part[i + 4 * v + 2], part[i + 4 * v + 3]);
+          sorted_faces.emplace_back(c,
+                                    std::vector<double>(part.begin() + i, part.begin() + i + 19));
+          thinnest = std::min(thinnest, part[i + 17] / part[i + 16]);
+        }
+    // penalty stiffness per face (SPEC 4; Contact/Penalty stiffness)
+    if (prm.penalty_stiffness == "area" && &pass == &passes.front())
+      reference_length = prm.penalty_reference_length > 0 ? prm.penalty_reference_length : thinnest;
+    const auto stiffness = [&](const double area, const double volume) {
+      return prm.penalty_stiffness == "area" ?
+               prm.penalty_scale * bulk_modulus * area / reference_length :
+               prm.penalty_scale * bulk_modulus * area * area / volume;
+    };
+    std::sort(sorted_faces.begin(), sorted_faces.end(), [](const auto &a, const auto &b) {
+      return lexicographic_less(a.first, b.first);
+    });
+    for (const auto &f : sorted_faces)
+      {
+        MasterFace face;
+        for (unsigned int v = 0; v < 4; ++v)
+          face.node[v] =
+            node_index(static_cast<types::global_dof_index>(f.second[4 * v]),
+                       Point<dim>(f.second[4 * v + 1], f.second[4 * v + 2], f.second[4 * v + 3]));
+        face.stiffness = stiffness(f.second[16], f.second[17]);
+        face.sign      = f.second[18];
+        pass.faces.push_back(face);
+        if (&pass == &passes.front())
+          {
+            node_area.resize(node_dof.size(), 0.);
+            const Point<dim> &p0 = node_X[face.node[0]], &p1 = node_X[face.node[1]],
+                             &p2 = node_X[face.node[2]], &p3 = node_X[face.node[3]];
+            const double area = 0.5 * cross_product_3d(p3 - p0, p2 - p1).norm();
+            for (unsigned int v = 0; v < 4; ++v)
+              node_area[face.node[v]] += 0.25 * area;
+          }
+      }
+  }
+
+
+
+  void
+  PenaltyContact::setup(
+    const DoFHandler<dim>                                    &dof_handler,
+    const std::shared_ptr<const Utilities::MPI::Partitioner> &vector_partitioner,
+    const LinearAlgebra::distributed::Vector<double>         &lumped_mass)
+  {
+    partitioner = vector_partitioner;
+    node_dof.clear();
+    node_X.clear();
+    dof_to_node.clear();
+    passes.clear();
+    passes.resize(prm.two_pass ? 2 : 1);
+    collect_pass(dof_handler, prm.slave_boundary, prm.master_boundary, passes[0]);
+    if (prm.two_pass)
+      collect_pass(dof_handler, prm.master_boundary, prm.slave_boundary, passes[1]);
+    AssertThrow(!passes[0].slaves.empty(),
+                ExcMessage("Contact/Slave boundary " + std::to_string(prm.slave_boundary) +
+                           " has no faces in this geometry."));
+    AssertThrow(!passes[0].faces.empty(),
+                ExcMessage("Contact/Master boundary " + std::to_string(prm.master_boundary) +
+                           " has no faces in this geometry."));
+    // nodal masses of the slaves (for contact damping), replicated
+    std::vector<double> owned_mass(node_dof.size(), 0.), mass(node_dof.size(), 0.);
+    for (unsigned int n = 0; n < node_dof.size(); ++n)
+      if (partitioner->in_local_range(node_dof[n]))
+        owned_mass[n] = lumped_mass.local_element(partitioner->global_to_local(node_dof[n]));
+    Utilities::MPI::sum(owned_mass, mpi_communicator, mass);
+    for (Pass &pass : passes)
+      for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+        {
+          pass.slaves[s].mass       = mass[pass.slave_node[s]];
+          pass.slaves[s].x_previous = pass.slaves[s].X;
+        }
+    node_area.resize(node_dof.size(), 0.);
+    for (Pass &pass : passes)
+      pass.bounds.assign(pass.faces.size(), FaceBound());
+    node_normal.assign(node_dof.size(), Tensor<1, dim>());
+    normal_evaluation.assign(node_dof.size(), 0);
+    normal_offsets.assign(node_dof.size() + 1, 0);
+    normal_entries.clear();
+    evaluation    = 0;
+    node_x        = node_X;
+    node_x_search = node_X;
+    std::vector<unsigned int> all(node_dof.size());
+    for (unsigned int n = 0; n < all.size(); ++n)
+      all[n] = n;
+    plan_gather(all, all_gather);
+    active_nodes.clear();
+    plan_gather(active_nodes, active_gather);
+    need_search  = true;
+    dissipation  = 0;
+    damping_loss = 0;
+    searches     = 0;
+    search_time  = 0;
+    trigger_nodes.clear();
+    step_motion_known = false;
+    overlap_checked   = false;
+    approach_searches = 0;
+    new_contact_depth = 0;
+  }
+
+
+
+  std::vector<MasterNodeState>
+  PenaltyContact::master_states() const
+  {
+    const Pass                  &pass = passes.front();
+    std::vector<MasterNodeState> states(node_dof.size());
+    std::vector<double>          weight(node_dof.size(), 0.);
+    std::vector<bool>            is_master(node_dof.size(), false);
+    for (const auto &face : pass.faces)
+      for (unsigned int v = 0; v < 4; ++v)
+        is_master[face.node[v]] = true;
+    for (const unsigned int s : pass.candidate_slaves)
+      {
+        const ContactNodeState &state = pass.slaves[s];
+        if (!state.in_contact)
+          continue;
+        const MasterFace &face = pass.faces[state.face];
+        const double      N[4] = {0.25 * (1 - state.xi) * (1 - state.eta),
+                                  0.25 * (1 + state.xi) * (1 - state.eta),
+                                  0.25 * (1 - state.xi) * (1 + state.eta),
+                                  0.25 * (1 + state.xi) * (1 + state.eta)};
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            MasterNodeState &m = states[face.node[v]];
+            m.normal_force += N[v] * state.normal_force;
+            m.tangential_force += N[v] * state.tangential_force;
+            m.slip_velocity += N[v] * state.slip_velocity;
+            m.cof += N[v] * state.cof;
+            weight[face.node[v]] += N[v];
+          }
+      }
+    std::vector<MasterNodeState> result;
+    for (unsigned int n = 0; n < node_dof.size(); ++n)
+      if (is_master[n])
+        {
+          MasterNodeState m = states[n];
+          m.X               = node_X[n];
+          m.area            = node_area[n];
+          if (weight[n] > 0)
+            {
+              m.slip_velocity /= weight[n];
+              m.cof /= weight[n];
+            }
+          result.push_back(m);
+        }
+    std::sort(result.begin(), result.end(), [](const auto &a, const auto &b) {
+      return lexicographic_less(a.X, b.X);
+    });
+    return result;
+  }
+
+
+
+  void
+  PenaltyContact::add_forces(const LinearAlgebra::distributed::Vector<double> &u,
+                             const double                                      dt,
+                             const bool                                        advance,
+                             LinearAlgebra::distributed::Vector<double>       &f)
+  {
+    Clock::time_point clock = Clock::now();
+    // the ranks meet here first after their element loops, in the reduction
+    // of the approach bound: what one waits for the other (imbalance, and
+    // the noise of single steps) is timed on its own
+    const bool approach = approach_bound_exceeded(u, advance, clock);
+    if (need_search || steps_since_search >= prm.search_interval || approach)
+      {
+        if (!need_search && steps_since_search < prm.search_interval)
+          ++approach_searches;
+        search(u);
+        timing.search += lap(clock);
+      }
+    else
+      {
+        gather_positions(u, active_gather);
+        timing.positions += lap(clock);
+      }
+
+    // rebuild at the next step when a candidate moved too far
+    const double limit = prm.rebuild_fraction * prm.search_margin;
+    for (const unsigned int n : active_nodes)
+      if (node_x[n].distance_square(node_x_search[n]) > limit * limit)
+        {
+          need_search = true;
+          break;
+        }
+
+    // the averaged nodal normals and the face bounds of this evaluation are
+    // computed where compute_slaves() first needs them
+    ++evaluation;
+
+    // each rank a block of the candidates (ordered by position: a rank's
+    // slaves share faces and nodal normals), then all states everywhere
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    for (Pass &pass : passes)
+      {
+        compute_slaves(pass, dt, advance);
+        timing.slaves += lap(clock);
+        if (n_ranks > 1)
+          {
+            exchange_states(pass, advance);
+            timing.exchange += lap(clock);
+          }
+      }
+    pairs.clear();
+    totals = ContactSummary();
+    for (const Pass &pass : passes)
+      accumulate(pass, advance);
+    if (totals.n_contact > 0)
+      totals.relative_displacement /= totals.n_contact;
+    if (!overlap_checked)
+      {
+        overlap_checked = true;
+        check_initial_overlap();
+      }
+
+    // forces on the owned DoFs, with the sign of internal forces
+    for (const Pass &pass : passes)
+      for (const unsigned int s : pass.candidate_slaves)
+        {
+          const ContactNodeState &state = pass.slaves[s];
+          if (!state.in_contact)
+            continue;
+          const Tensor<1, dim> F   = state.normal_force * state.normal + state.tangential_force;
+          const auto           add = [&](const types::global_dof_index dof, const double weight) {
+            if (partitioner->in_local_range(dof))
+              {
+                const unsigned int i = partitioner->global_to_local(dof);
+                for (unsigned int d = 0; d < dim; ++d)
+                  f.local_element(i + d) -= weight * F[d];
+              }
+          };
+          add(node_dof[pass.slave_node[s]], 1.);
+          const MasterFace &face = pass.faces[state.face];
+          double            N[4];
+          BilinearFace::shape(state.xi, state.eta, N);
+          for (unsigned int v = 0; v < 4; ++v)
+            add(node_dof[face.node[v]], -N[v]);
+        }
+    if (advance)
+      ++steps_since_search;
+    timing.forces += lap(clock);
+  }
+
+
+
+  template <class Archive>
+  void
+  PenaltyContact::serialize(Archive &ar)
+  {
+    ar.vector(node_x);
+    ar.vector(node_x_search);
+    ar.vector(active_nodes);
+    std::uint64_t n_passes = passes.size();
+    ar.pod(n_passes);
+    if constexpr (Archive::is_loading)
+      AssertThrow(n_passes == passes.size(),
+                  ExcMessage("The checkpoint does not fit this run (contact passes differ)."));
+    for (Pass &pass : passes)
+      {
+        const std::size_t n_slaves = pass.slaves.size();
+        ar.vector(pass.slaves);
+        if constexpr (Archive::is_loading)
+          AssertThrow(pass.slaves.size() == n_slaves,
+                      ExcMessage("The checkpoint does not fit this run (slave nodes differ)."));
+        ar.vector(pass.candidate_slaves);
+        ar.vector(pass.candidate_faces);
+        ar.vector(pass.face_offsets);
+        ar.vector(pass.face_lists);
+      }
+    ar.pod(totals);
+    ar.pod(dissipation);
+    ar.pod(damping_loss);
+    ar.pod(steps_since_search);
+    ar.pod(need_search);
+    ar.pod(searches);
+    if constexpr (Archive::is_loading)
+      {
+        // the search structures that follow from the state read
+        build_normal_adjacency();
+        plan_gather(active_nodes, active_gather);
+        plan_approach_trigger();
+        // the motion of the last step before the checkpoint is not known here
+        step_motion_known = false;
+        overlap_checked   = true;
+      }
+  }
+
+
+
+  void
+  PenaltyContact::save(Checkpoint::Writer &out) const
+  {
+    const_cast<PenaltyContact *>(this)->serialize(out);
+  }
+
+
+
+  void
+  PenaltyContact::load(Checkpoint::Reader &in)
+  {
+    serialize(in);
+  }
+} // namespace WheelRail

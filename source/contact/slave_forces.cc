@@ -1,0 +1,376 @@
+/**
+ * @file contact/slave_forces.cc
+ * The contact of the candidate slave nodes at one evaluation: each rank's
+ * block of the candidates (closest point, penalty force, friction return
+ * map), the exchange of the blocks' states, and the totals summed in slave
+ * order on every rank.
+ */
+
+#include <deal.II/base/mpi.h>
+
+#include <wheelrail/contact/bilinear_face.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/stopwatch.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace WheelRail
+{
+  using namespace ContactGeometry;
+
+
+
+  std::pair<unsigned int, unsigned int>
+  PenaltyContact::candidate_block(const unsigned int n, const unsigned int rank) const
+  {
+    const unsigned long n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    return {static_cast<unsigned int>(n * static_cast<unsigned long>(rank) / n_ranks),
+            static_cast<unsigned int>(n * (rank + 1ul) / n_ranks)};
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  PenaltyContact::own_candidates(const unsigned int n) const
+  {
+    return candidate_block(n, Utilities::MPI::this_mpi_process(mpi_communicator));
+  }
+
+
+
+  void
+  PenaltyContact::compute_slaves(Pass &pass, const double dt, const bool advance)
+  {
+    const double margin = prm.search_margin;
+    const auto   own    = own_candidates(pass.candidate_slaves.size());
+    for (unsigned int c = own.first; c < own.second; ++c)
+      {
+        const unsigned int s     = pass.candidate_slaves[c];
+        ContactNodeState  &state = pass.slaves[s];
+        const Point<dim>  &xs    = node_x[pass.slave_node[s]];
+        state.x                  = xs;
+        const Point<dim> x_prev  = state.x_previous;
+        state.friction_loss      = 0;
+        state.damping_work       = 0;
+        if (advance)
+          state.x_previous = xs;
+
+        // closest point over the candidate faces; a projection inside a
+        // face wins, otherwise the nearest face edge takes over
+        int            best_face = -1;
+        double         best_xi = 0, best_eta = 0, best_gap = 0, best_out = 1e300;
+        Tensor<1, dim> best_n;
+        for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
+          {
+            const FaceBound &bound = face_bound(pass, pass.face_lists[k]);
+            if (bound.usable)
+              {
+                // the projection cannot lie within 1.1 of this face (see
+                // face_bound()): project() would give out > 0.1,
+                // skipped below; most candidates are neighbours of the
+                // face under the slave and end here
+                const Tensor<1, dim> d  = xs - bound.centre;
+                const double         dd = d.norm_square();
+                const double         dn = d * bound.normal;
+                const double         reach =
+                  1.01 * (bound.radius + (std::sqrt(dd) + bound.radius) * bound.sin_angle);
+                if (dd - dn * dn > reach * reach)
+                  continue;
+              }
+            const MasterFace &face = pass.faces[pass.face_lists[k]];
+            BilinearFace      bf{{&node_x[face.node[0]],
+                                  &node_x[face.node[1]],
+                                  &node_x[face.node[2]],
+                                  &node_x[face.node[3]]}};
+            double            xi, eta;
+            bf.project(xs, xi, eta);
+            const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
+            if (out > 0.1)
+              continue;
+            if (out > 0)
+              bf.project_to_boundary(xs, xi, eta);
+            Point<dim>     x;
+            Tensor<1, dim> dxi, deta;
+            double         N[4];
+            bf.evaluate(xi, eta, x, dxi, deta, N);
+            Tensor<1, dim> n;
+            for (unsigned int j = 0; j < 4; ++j)
+              n += N[j] * averaged_normal(face.node[j]);
+            n /= n.norm();
+            const double gap = n * (xs - x);
+            if (gap < -margin)
+              continue;
+            const double o      = std::max(out, 0.);
+            const bool   better = (o < best_out - 1e-12) ||
+                                (o <= best_out + 1e-12 && std::abs(gap) < std::abs(best_gap));
+            if (best_face < 0 || better)
+              {
+                best_face = pass.face_lists[k];
+                best_xi   = xi;
+                best_eta  = eta;
+                best_gap  = gap;
+                best_out  = o;
+                best_n    = n;
+              }
+          }
+
+        state.gap = best_face >= 0 ? best_gap : 0.;
+        if (best_face < 0 || best_gap >= 0)
+          {
+            separate(state, xs, state.gap, advance);
+            continue;
+          }
+
+        const MasterFace &face = pass.faces[best_face];
+        const double      k    = face.stiffness;
+        if (advance && state.face < 0)
+          new_contact_depth = std::max(new_contact_depth, -best_gap);
+        state.in_contact   = true;
+        state.normal       = best_n;
+        state.normal_force = -k * best_gap;
+        if (advance && prm.damping_ratio > 0 && state.face >= 0)
+          {
+            // viscous normal force on the closing rate of the gap; the
+            // total stays compressive
+            const double c    = 2. * prm.damping_ratio * std::sqrt(k * state.mass);
+            const double rate = (best_gap - state.gap_previous) / dt;
+            const double fd   = std::max(-c * rate, -state.normal_force);
+            state.normal_force += fd;
+            state.damping_work = -fd * rate * dt;
+          }
+
+        if (law && advance)
+          {
+            const double kt = prm.tangential_factor * k;
+            // slip increment: the contact point now minus the old contact
+            // point on the current master geometry
+            Tensor<1, dim> de;
+            Tensor<1, dim> Ft_old;
+            if (state.face < 0)
+              {
+                // a new contact: the slip of this step is the motion of the
+                // slave relative to the face, from its previous position
+                // projected onto the same face
+                BilinearFace bn{{&node_x[face.node[0]],
+                                 &node_x[face.node[1]],
+                                 &node_x[face.node[2]],
+                                 &node_x[face.node[3]]}};
+                double       xi_p, eta_p;
+                bn.project(x_prev, xi_p, eta_p);
+                Point<dim>     x_old, x_new;
+                Tensor<1, dim> dxi, deta;
+                double         N[4];
+                bn.evaluate(xi_p, eta_p, x_old, dxi, deta, N);
+                bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
+                de = x_new - x_old;
+              }
+            else
+              {
+                const MasterFace &old = pass.faces[state.face];
+                BilinearFace      bf{{&node_x[old.node[0]],
+                                      &node_x[old.node[1]],
+                                      &node_x[old.node[2]],
+                                      &node_x[old.node[3]]}};
+                Point<dim>        x_old, x_new;
+                Tensor<1, dim>    dxi, deta;
+                double            N[4];
+                bf.evaluate(state.xi, state.eta, x_old, dxi, deta, N);
+                BilinearFace bn{{&node_x[face.node[0]],
+                                 &node_x[face.node[1]],
+                                 &node_x[face.node[2]],
+                                 &node_x[face.node[3]]}};
+                bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
+                de     = x_new - x_old;
+                Ft_old = state.tangential_force;
+              }
+            Tensor<1, dim> trial = Ft_old - kt * de;
+            trial -= (trial * best_n) * best_n;
+            state.slip_rate        = de / dt;
+            state.slip_velocity    = de.norm() / dt;
+            state.cof              = law->coefficient(state.slip_velocity);
+            state.tangential_force = return_map(
+              trial, state.cof * state.normal_force, kt, state.slipping, state.friction_loss);
+          }
+        else
+          {
+            // frictionless, or a static evaluation (no time step to slip in)
+            state.tangential_force = Tensor<1, dim>();
+            state.slip_velocity    = 0;
+            state.slip_rate        = Tensor<1, dim>();
+            state.cof              = law ? law->coefficient(0.) : 0.;
+            state.slipping         = false;
+          }
+        state.face         = best_face;
+        state.xi           = best_xi;
+        state.eta          = best_eta;
+        state.gap_previous = best_gap;
+      }
+  }
+
+
+
+  void
+  PenaltyContact::separate(ContactNodeState &state,
+                           const Point<dim> &xs,
+                           const double      gap,
+                           const bool        advance)
+  {
+    state.x             = xs;
+    state.friction_loss = 0;
+    state.damping_work  = 0;
+    if (advance)
+      state.x_previous = xs;
+    state.gap              = gap;
+    state.in_contact       = false;
+    state.normal_force     = 0;
+    state.tangential_force = Tensor<1, dim>();
+    state.slip_velocity    = 0;
+    state.slip_rate        = Tensor<1, dim>();
+    state.slipping         = false;
+    if (advance)
+      state.face = -1;
+  }
+
+
+
+  void
+  PenaltyContact::exchange_states(Pass &pass, const bool advance)
+  {
+    // Rank r computed the block own_candidates() gives it. Most candidates
+    // are not in contact, and their state follows from the gap alone
+    // (separate(), with the position every rank has): only the states in
+    // contact travel whole. First the (contact, gap) pairs of all blocks,
+    // then the contact states, whose number per rank the pairs tell.
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const unsigned int n       = pass.candidate_slaves.size();
+    const auto         own     = own_candidates(n);
+    std::vector<int>  &counts = exchange_counts, &displs = exchange_displs;
+    counts.resize(n_ranks);
+    displs.resize(n_ranks);
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        const auto block = candidate_block(n, r);
+        counts[r]        = 2 * (block.second - block.first);
+        displs[r]        = 2 * block.first;
+      }
+    exchange_gaps.resize(2 * n);
+    exchange_buffer.clear();
+    for (unsigned int c = own.first; c < own.second; ++c)
+      {
+        const ContactNodeState &state = pass.slaves[pass.candidate_slaves[c]];
+        exchange_gaps[2 * c]          = state.in_contact ? 1. : 0.;
+        exchange_gaps[2 * c + 1]      = state.gap;
+      }
+    int ierr = MPI_Allgatherv(MPI_IN_PLACE,
+                              0,
+                              MPI_DATATYPE_NULL,
+                              exchange_gaps.data(),
+                              counts.data(),
+                              displs.data(),
+                              MPI_DOUBLE,
+                              mpi_communicator);
+    AssertThrowMPI(ierr);
+
+    // the contact states, in candidate order
+    const int    size  = sizeof(ContactNodeState);
+    unsigned int total = 0;
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        const unsigned int first = displs[r] / 2, last = first + counts[r] / 2;
+        unsigned int       count = 0;
+        for (unsigned int c = first; c < last; ++c)
+          count += exchange_gaps[2 * c] > 0;
+        counts[r] = count * size;
+        displs[r] = total * size;
+        total += count;
+      }
+    exchange_buffer.resize(total);
+    for (unsigned int c = own.first,
+                      i = displs[Utilities::MPI::this_mpi_process(mpi_communicator)] / size;
+         c < own.second;
+         ++c)
+      if (exchange_gaps[2 * c] > 0)
+        exchange_buffer[i++] = pass.slaves[pass.candidate_slaves[c]];
+    ierr = MPI_Allgatherv(MPI_IN_PLACE,
+                          0,
+                          MPI_DATATYPE_NULL,
+                          exchange_buffer.data(),
+                          counts.data(),
+                          displs.data(),
+                          MPI_BYTE,
+                          mpi_communicator);
+    AssertThrowMPI(ierr);
+    for (unsigned int c = 0, i = 0; c < n; ++c)
+      {
+        const bool in_contact = exchange_gaps[2 * c] > 0;
+        if (c < own.first || c >= own.second)
+          {
+            const unsigned int s = pass.candidate_slaves[c];
+            if (in_contact)
+              pass.slaves[s] = exchange_buffer[i];
+            else
+              separate(pass.slaves[s],
+                       node_x[pass.slave_node[s]],
+                       exchange_gaps[2 * c + 1],
+                       advance);
+          }
+        i += in_contact;
+      }
+  }
+
+
+
+  void
+  PenaltyContact::accumulate(const Pass &pass, const bool advance)
+  {
+    for (const unsigned int s : pass.candidate_slaves)
+      {
+        const ContactNodeState &state = pass.slaves[s];
+        damping_loss += state.damping_work;
+        dissipation += state.friction_loss;
+        if (!state.in_contact)
+          continue;
+        const MasterFace &face = pass.faces[state.face];
+        const double      k    = face.stiffness;
+        totals.max_penetration = std::max(totals.max_penetration, -state.gap);
+        totals.elastic_energy += 0.5 * k * state.gap * state.gap;
+        if (law && advance)
+          totals.elastic_energy +=
+            0.5 * state.tangential_force.norm_square() / (prm.tangential_factor * k);
+
+        const Tensor<1, dim> F = state.normal_force * state.normal + state.tangential_force;
+        // the force on the first pass's slave body: in the second pass the
+        // slaves belong to the other body
+        totals.force += (&pass == &passes.front()) ? F : -F;
+        ++totals.n_contact;
+        double N[4];
+        BilinearFace::shape(state.xi, state.eta, N);
+        {
+          Point<dim> X_c, x_c;
+          for (unsigned int j = 0; j < 4; ++j)
+            {
+              X_c += N[j] * node_X[face.node[j]];
+              x_c += N[j] * node_x[face.node[j]];
+            }
+          totals.relative_displacement += (state.x - state.X) - (x_c - X_c);
+        }
+        if (state.slipping)
+          ++totals.n_slip;
+        if (law &&
+            state.tangential_force.norm() > state.cof * state.normal_force * (1 + 1e-12) + 1e-300)
+          ++totals.n_violation;
+
+        ContactPair pair;
+        pair.slave = node_dof[pass.slave_node[s]];
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            pair.master[v] = node_dof[face.node[v]];
+            pair.shape[v]  = N[v];
+          }
+        pair.normal    = state.normal;
+        pair.stiffness = k;
+        pairs.push_back(pair);
+      }
+  }
+} // namespace WheelRail

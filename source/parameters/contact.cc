@@ -1,0 +1,150 @@
+/**
+ * @file parameters/contact.cc
+ * The subsection Contact: penalty node-to-segment contact, the candidate
+ * search and the friction law (SPEC 4).
+ */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/contact/friction_law.h>
+#include <wheelrail/parameters/parameters.h>
+
+#include <cmath>
+#include <string>
+
+namespace WheelRail
+{
+  void
+  ContactParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    prm.declare_entry("Enabled",
+                      "true",
+                      Patterns::Bool(),
+                      "Penalty node-to-segment contact between the slave and "
+                      "master boundaries.");
+    prm.declare_entry("Slave boundary",
+                      "1",
+                      Patterns::Integer(0, 255),
+                      "Boundary id of the slave nodes (1 = wheel tread, 30 = "
+                      "block bottom).");
+    prm.declare_entry("Master boundary",
+                      "10",
+                      Patterns::Integer(0, 255),
+                      "Boundary id of the master faces (10 = rail top, 40 = "
+                      "plate top).");
+    prm.declare_entry("Two pass",
+                      "false",
+                      Patterns::Bool(),
+                      "Also treat the master boundary's nodes as slaves of the "
+                      "slave boundary's faces (symmetric contact).");
+    prm.declare_entry("Penalty scale factor",
+                      "0.1",
+                      Patterns::Double(1e-6, 100),
+                      "SF in the penalty stiffness k = SF K A^2 / V (K bulk "
+                      "modulus, A master face area, V its cell's volume) [-], "
+                      "range [1e-6, 100].");
+    prm.declare_entry("Penalty stiffness",
+                      "segment",
+                      Patterns::Selection("segment|area"),
+                      "'segment': k = SF K A^2 / V per master face (LS-DYNA, SPEC "
+                      "4): the stiffness per unit area, SF K A / V, grows as the "
+                      "mesh is refined, so a wheel rolling from coarse into fine "
+                      "faces is pushed up (the paper mesh: F_N from 140 to over "
+                      "400 kN); 'area': k = SF K A / h_ref, the same pressure per "
+                      "penetration SF K / h_ref on every face, equal to "
+                      "'segment' on cubic cells of size h_ref.");
+    prm.declare_entry("Penalty reference length",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "h_ref of Penalty stiffness = area [m], range [0, 1]; 0: "
+                      "the smallest V / A of the master faces' cells (the "
+                      "finest cells, where both choices agree).");
+    prm.declare_entry("Tangential stiffness factor",
+                      "1",
+                      Patterns::Double(1e-6, 100),
+                      "k_t / k of the elastic friction predictor [-], range "
+                      "[1e-6, 100].");
+    prm.declare_entry("Contact damping",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "Viscous damping of the normal contact force, a fraction "
+                      "of the critical damping 2 sqrt(k m) of the slave node on "
+                      "its penalty spring (LS-DYNA's VDC / 100) [-], range "
+                      "[0, 1]; it damps the chatter of bodies resting on each "
+                      "other.");
+    prm.declare_entry("Search interval",
+                      "10",
+                      Patterns::Integer(1, 1000000),
+                      "Steps between rebuilds of the candidate lists [-], range "
+                      "[1, 1e6].");
+    prm.declare_entry("Search margin",
+                      "0.002",
+                      Patterns::Double(1e-6, 1),
+                      "Distance around the master surface within which slave "
+                      "nodes are candidates [m], range [1e-6, 1].");
+    prm.declare_entry("Rebuild fraction",
+                      "0.5",
+                      Patterns::Double(0.01, 1),
+                      "The candidates are also rebuilt when a candidate node "
+                      "has moved more than this fraction of the search margin "
+                      "since the last rebuild [-], range [0.01, 1].");
+    prm.declare_entry("Initial overlap tolerance",
+                      "0",
+                      Patterns::Double(0, 0.01),
+                      "A slave node that penetrates its master face at the start "
+                      "deeper than the larger of this and 0.05 x the face's "
+                      "longest edge (the faceting of curved surfaces) stops the "
+                      "run: the bodies overlap as placed [m], range [0, 0.01]. "
+                      "Set it to start with a deliberate overlap.");
+    prm.declare_entry("Friction law",
+                      "exponential",
+                      Patterns::Selection("none|" + FrictionLaw::names()),
+                      "'none': frictionless; 'constant': Coulomb, f = Static "
+                      "friction coefficient; 'exponential': f = f_D + (f_S - "
+                      "f_D) exp(-k s_n) (paper eq. 1), s_n the micro-slip "
+                      "velocity.");
+    prm.declare_entry("Static friction coefficient",
+                      "0.5",
+                      Patterns::Double(0, 10),
+                      "f_S [-], range [0, 10].");
+    prm.declare_entry("Dynamic friction coefficient",
+                      "0.32",
+                      Patterns::Double(0, 10),
+                      "f_D [-], range [0, 10].");
+    prm.declare_entry("Decay coefficient",
+                      "6",
+                      Patterns::Double(0, 1e6),
+                      "k of the exponential law [s/m], range [0, 1e6].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    enabled                   = prm.get_bool("Enabled");
+    slave_boundary            = prm.get_integer("Slave boundary");
+    master_boundary           = prm.get_integer("Master boundary");
+    two_pass                  = prm.get_bool("Two pass");
+    penalty_scale             = prm.get_double("Penalty scale factor");
+    penalty_stiffness         = prm.get("Penalty stiffness");
+    penalty_reference_length  = prm.get_double("Penalty reference length");
+    tangential_factor         = prm.get_double("Tangential stiffness factor");
+    damping_ratio             = prm.get_double("Contact damping");
+    search_interval           = prm.get_integer("Search interval");
+    search_margin             = prm.get_double("Search margin");
+    rebuild_fraction          = prm.get_double("Rebuild fraction");
+    initial_overlap_tolerance = prm.get_double("Initial overlap tolerance");
+    friction_law              = prm.get("Friction law");
+    static_coefficient        = prm.get_double("Static friction coefficient");
+    dynamic_coefficient       = prm.get_double("Dynamic friction coefficient");
+    decay                     = prm.get_double("Decay coefficient");
+    prm.leave_subsection();
+    AssertThrow(slave_boundary != master_boundary,
+                ExcMessage("Contact/Slave boundary and Contact/Master boundary must differ."));
+  }
+} // namespace WheelRail

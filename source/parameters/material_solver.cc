@@ -1,0 +1,135 @@
+/**
+ * @file parameters/material_solver.cc
+ * The subsections Material (linear elasticity, SPEC 2) and Time
+ * integration (element, damping and the central-difference step).
+ */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/parameters/parameters.h>
+#include <wheelrail/parameters/vector_entry.h>
+
+#include <cmath>
+#include <string>
+
+namespace WheelRail
+{
+  using ParameterEntries::get_vector;
+  using ParameterEntries::vector_pattern;
+
+
+
+  double
+  MaterialParameters::wave_speed() const
+  {
+    return std::sqrt((lambda() + 2. * mu()) / density);
+  }
+
+
+
+  double
+  MaterialParameters::bar_wave_speed() const
+  {
+    return std::sqrt(youngs_modulus / density);
+  }
+
+
+
+  void
+  MaterialParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    prm.declare_entry("Young's modulus",
+                      "2.1e11",
+                      Patterns::Double(1e6, 1e13),
+                      "E of wheel and rail steel [Pa], range [1e6, 1e13].");
+    prm.declare_entry("Poisson's ratio",
+                      "0.3",
+                      Patterns::Double(0, 0.49),
+                      "nu [-], range [0, 0.49].");
+    prm.declare_entry("Density", "7800", Patterns::Double(1, 1e5), "rho [kg/m^3], range [1, 1e5].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  MaterialParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    youngs_modulus = prm.get_double("Young's modulus");
+    poisson_ratio  = prm.get_double("Poisson's ratio");
+    density        = prm.get_double("Density");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SolverParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    prm.declare_entry("End time",
+                      "1e-4",
+                      Patterns::Double(0, 10),
+                      "Simulated time of the explicit run [s], range [0, 10].");
+    prm.declare_entry("Time step",
+                      "0",
+                      Patterns::Double(0, 1e-2),
+                      "Time step of the central-difference scheme [s], range "
+                      "[0, 1e-2]; 0 = the stable step times the Courant "
+                      "factor. A value above the stable step is an error. "
+                      "The paper: 2.6e-8 s.");
+    prm.declare_entry("Courant factor",
+                      "0.9",
+                      Patterns::Double(0.01, 1.0),
+                      "C in dt = C min_e(L_e/c) (with the damping reduction) "
+                      "[-], range [0.01, 1].");
+    prm.declare_entry("Hourglass coefficient",
+                      "0.1",
+                      Patterns::Double(0, 1),
+                      "QM of the Flanagan-Belytschko stiffness hourglass "
+                      "control [-], range [0, 1]; 0 switches it off.");
+    prm.declare_entry("Damping model",
+                      "stiffness",
+                      Patterns::Selection("none|stiffness|Rayleigh"),
+                      "'stiffness': LS-DYNA part stiffness damping, "
+                      "beta_e = 2 COEF/omega_e per element (SPEC 2); "
+                      "'Rayleigh': classical C = beta K with beta in seconds; "
+                      "'none'.");
+    prm.declare_entry("Stiffness damping coefficient",
+                      "1e-4",
+                      Patterns::Double(0, 1),
+                      "COEF of the stiffness damping, a fraction of critical "
+                      "damping at each element's highest frequency [-], range "
+                      "[0, 1]. The paper: 1e-4.");
+    prm.declare_entry("Rayleigh beta",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "beta of Rayleigh damping C = beta K [s], range [0, 1]; "
+                      "used with Damping model = Rayleigh.");
+    prm.declare_entry("Gravity",
+                      "0, 0, -9.81",
+                      vector_pattern(),
+                      "Gravitational acceleration vector [m/s^2].");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  SolverParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    end_time                      = prm.get_double("End time");
+    time_step                     = prm.get_double("Time step");
+    courant_factor                = prm.get_double("Courant factor");
+    hourglass_coefficient         = prm.get_double("Hourglass coefficient");
+    damping_model                 = prm.get("Damping model");
+    stiffness_damping_coefficient = prm.get_double("Stiffness damping coefficient");
+    rayleigh_beta                 = prm.get_double("Rayleigh beta");
+    gravity                       = get_vector(prm, "Gravity");
+    prm.leave_subsection();
+  }
+} // namespace WheelRail

@@ -1,0 +1,64 @@
+/**
+ * @file parameters/parameters.cc
+ * All parameters of a run: the subsections declared in the order of the
+ * parameter file and --help, read and checked.
+ */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/parameters/parameter_file.h>
+#include <wheelrail/parameters/parameters.h>
+
+#include <string>
+
+namespace WheelRail
+{
+  void
+  Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    ProblemParameters::declare_parameters(prm);
+    GeometryParameters::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    SolverParameters::declare_parameters(prm);
+    BoundaryParameters::declare_parameters(prm);
+    InitialParameters::declare_parameters(prm);
+    ContactParameters::declare_parameters(prm);
+    StaticParameters::declare_parameters(prm);
+    WheelsetParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    VerificationParameters::declare_parameters(prm);
+  }
+
+
+
+  void
+  Parameters::parse(ParameterHandler &prm, const std::string &filename)
+  {
+    ParameterFile::parse(prm, filename);
+    problem.parse_parameters(prm);
+    geometry.parse_parameters(prm);
+    material.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    boundary.parse_parameters(prm);
+    initial.parse_parameters(prm);
+    contact.parse_parameters(prm);
+    statics.parse_parameters(prm);
+    wheelset.parse_parameters(prm);
+    output.parse_parameters(prm);
+    verification.parse_parameters(prm);
+    // validate the expressions now, so that a typo stops the run at once
+    make_vector_function(initial.velocity_expression,
+                         initial.velocity_constants,
+                         "x,y,z",
+                         "Initial conditions/Velocity function");
+    make_vector_function(boundary.applied_force_expression,
+                         boundary.applied_force_constants,
+                         "x,y,z,t",
+                         "Boundary conditions/Applied force");
+    make_vector_function(boundary.prescribed_velocity_expression,
+                         boundary.prescribed_velocity_constants,
+                         "x,y,z,t",
+                         "Boundary conditions/Prescribed velocity");
+  }
+} // namespace WheelRail

@@ -1,0 +1,155 @@
+/**
+ * @file parameters/static_wheelset.cc
+ * The subsections Static solve (the implicit static contact solve, SPEC
+ * 5.2) and Wheelset (axle, suspension, sprung mass, torque, SPEC 3).
+ */
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/parameters/parameters.h>
+
+#include <cmath>
+#include <string>
+
+namespace WheelRail
+{
+  void
+  StaticParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static solve");
+    prm.declare_entry("Axle load",
+                      "140300",
+                      Patterns::Double(0, 1e8),
+                      "Vertical force F_N of the wheel on the rail sought by "
+                      "the static contact solve [N], range [0, 1e8]; the paper: "
+                      "(13.4 t + 0.9 t) g = 140.3 kN.");
+    prm.declare_entry("Load tolerance",
+                      "1e-4",
+                      Patterns::Double(1e-12, 0.1),
+                      "Relative tolerance on the contact force [-], range "
+                      "[1e-12, 0.1].");
+    prm.declare_entry("Newton tolerance",
+                      "1e-5",
+                      Patterns::Double(1e-14, 1e-2),
+                      "Newton stops when the residual norm falls below this "
+                      "fraction of the load's norm [-], range [1e-14, 1e-2].");
+    prm.declare_entry("Max Newton iterations",
+                      "30",
+                      Patterns::Integer(1, 1000),
+                      "Largest number of Newton iterations per load step [-].");
+    prm.declare_entry("Linear solver tolerance",
+                      "1e-8",
+                      Patterns::Double(1e-16, 1e-2),
+                      "Relative tolerance of CG with AMG [-], range "
+                      "[1e-16, 1e-2].");
+    prm.declare_entry("Inexact Newton",
+                      "false",
+                      Patterns::Bool(),
+                      "Solve each Newton step only as accurately as the next "
+                      "iterate can use (Eisenstat-Walker): CG stops at the "
+                      "relative residual 0.5 x Newton tolerance x load / "
+                      "Newton residual, kept within [Linear solver tolerance, "
+                      "1e-2]. The converged state meets the same Newton "
+                      "tolerance with fewer CG iterations; false: every step "
+                      "to Linear solver tolerance.");
+    prm.declare_entry("AMG near null space",
+                      "translations",
+                      Patterns::Selection("translations|rigid body modes"),
+                      "Near null space of the AMG preconditioner of the static "
+                      "solve: 'translations' (3 constant modes, aggregation "
+                      "threshold 0.02) or 'rigid body modes' (translations "
+                      "and rotations, threshold 1e-4): about 3.5 x fewer CG "
+                      "iterations and 2 x faster on the paper mesh, but about "
+                      "1.4 x the peak memory (2.5 instead of 1.8 GB per rank "
+                      "of 2).");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StaticParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static solve");
+    axle_load             = prm.get_double("Axle load");
+    load_tolerance        = prm.get_double("Load tolerance");
+    newton_tolerance      = prm.get_double("Newton tolerance");
+    max_newton_iterations = prm.get_integer("Max Newton iterations");
+    linear_tolerance      = prm.get_double("Linear solver tolerance");
+    inexact_newton        = prm.get_bool("Inexact Newton");
+    amg_null_space        = prm.get("AMG near null space");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  WheelsetParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Wheelset");
+    prm.declare_entry("Unsprung mass",
+                      "900",
+                      Patterns::Double(1, 1e6),
+                      "Mass of wheel and axle [kg], range [1, 1e6]; the rigid axle "
+                      "gets this minus the FE wheel's mass. The paper: 900 kg.");
+    prm.declare_entry("Sprung mass",
+                      "13400",
+                      Patterns::Double(0, 1e7),
+                      "M_c on the primary suspension [kg], range [0, 1e7]. The "
+                      "paper: 13.4 t.");
+    prm.declare_entry("Suspension stiffness",
+                      "1.15e6",
+                      Patterns::Double(0, 1e12),
+                      "K of the primary suspension [N/m], range [0, 1e12].");
+    prm.declare_entry("Suspension damping",
+                      "2500",
+                      Patterns::Double(0, 1e9),
+                      "C of the primary suspension [N s/m], range [0, 1e9].");
+    prm.declare_entry("Axle rotational inertia",
+                      "20",
+                      Patterns::Double(0, 1e6),
+                      "Polar moment of inertia of the axle about y, in addition to "
+                      "the FE wheel's [kg m^2], range [0, 1e6].");
+    prm.declare_entry("Rolling speed",
+                      "38.8889",
+                      Patterns::Double(0, 200),
+                      "V of the rolling run [m/s], range [0, 200]; 140 km/h = "
+                      "38.8889 m/s.");
+    prm.declare_entry("Nominal traction coefficient",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "mu_n = T / (R_w F_N,static): sets the driving torque T "
+                      "about the axle [-], range [0, 1].");
+    prm.declare_entry("Torque ramp time",
+                      "0",
+                      Patterns::Double(0, 10),
+                      "The torque rises linearly from 0 over this time [s], "
+                      "range [0, 10]; 0 = applied at once.");
+    prm.declare_entry("Static start",
+                      "true",
+                      Patterns::Bool(),
+                      "Before the explicit run, find the static equilibrium at A "
+                      "(wheel on the rail under gravity and the static load) with "
+                      "the implicit contact solve.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  WheelsetParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Wheelset");
+    unsprung_mass        = prm.get_double("Unsprung mass");
+    sprung_mass          = prm.get_double("Sprung mass");
+    suspension_stiffness = prm.get_double("Suspension stiffness");
+    suspension_damping   = prm.get_double("Suspension damping");
+    axle_inertia         = prm.get_double("Axle rotational inertia");
+    rolling_speed        = prm.get_double("Rolling speed");
+    traction_coefficient = prm.get_double("Nominal traction coefficient");
+    torque_ramp_time     = prm.get_double("Torque ramp time");
+    static_start         = prm.get_bool("Static start");
+    prm.leave_subsection();
+  }
+} // namespace WheelRail
