@@ -7,7 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <wheelrail/parameters.h>
-#include <wheelrail/simulator.h>
+#include <wheelrail/simulator/simulator.h>
 
 #include <algorithm>
 #include <chrono>

@@ -1,7 +1,7 @@
 // Unit test of the friction laws, the return map and the Hertz reference:
 // each value against an independent evaluation of its formula.
 #include <wheelrail/contact/friction_law.h>
-#include <wheelrail/hertz.h>
+#include <wheelrail/verification/hertz.h>
 
 #include <cmath>
 #include <cstdio>

@@ -181,6 +181,13 @@ namespace WheelRail
         check();
       }
 
+      /** The file read, for messages. */
+      const std::string &
+      file_name() const
+      {
+        return name;
+      }
+
     private:
       void
       check() const

@@ -1,11 +1,11 @@
 /**
- * @file hertz.h
+ * @file verification/hertz.h
  * Hertz's solution for two elastic bodies with an elliptic contact (exact
  * complete elliptic integrals), used as the independent reference of the
  * static contact test (SPEC 8).
  */
-#ifndef wheelrail_hertz_h
-#define wheelrail_hertz_h
+#ifndef wheelrail_verification_hertz_h
+#define wheelrail_verification_hertz_h
 
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_2.hpp>

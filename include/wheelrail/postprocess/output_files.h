@@ -1,12 +1,12 @@
 /**
- * @file output_files.h
+ * @file postprocess/output_files.h
  * How the run's files reach the output directory: a lock that keeps a
  * second run out of a directory in use, and writers that put each file in
  * place complete or not at all (a temporary name, then a rename), so that a
  * run killed while writing leaves the previous version of every file.
  */
-#ifndef wheelrail_output_files_h
-#define wheelrail_output_files_h
+#ifndef wheelrail_postprocess_output_files_h
+#define wheelrail_postprocess_output_files_h
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>

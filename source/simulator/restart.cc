@@ -1,16 +1,15 @@
 /**
  * The checkpoint of an explicit run: Simulator::write_checkpoint(),
- * check_checkpoint() and read_checkpoint(). The file format is in
+ * check_checkpoint() and read_checkpoint(); the state after the header is
+ * listed once, in Simulator::serialize(). The file format is in
  * checkpoint.h.
  */
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <boost/archive/binary_iarchive.hpp>
-#include <boost/archive/binary_oarchive.hpp>
-
 #include <wheelrail/checkpoint.h>
-#include <wheelrail/simulator.h>
+#include <wheelrail/simulator/format.h>
+#include <wheelrail/simulator/simulator.h>
 
 #include <cmath>
 #include <filesystem>
@@ -20,22 +19,63 @@
 
 namespace WheelRail
 {
+  using Report::fmt;
+
   namespace
   {
-    std::string
-    fmt(const double x, const unsigned int digits = 6)
-    {
-      std::ostringstream s;
-      s << std::setprecision(digits) << x;
-      return s.str();
-    }
-
     std::string
     rank_file(const std::string &directory, const unsigned int rank)
     {
       return directory + "/rank_" + std::to_string(rank) + ".bin";
     }
   } // namespace
+
+
+
+  template <class Archive>
+  void
+  Simulator::serialize(Archive &ar)
+  {
+    if constexpr (Archive::is_loading)
+      {
+        const double time_step = solver->time_step();
+        solver->load(ar);
+        AssertThrow(solver->time_step() == time_step,
+                    ExcMessage("The checkpoint '" + ar.file_name() +
+                               "' was written with the time step " + fmt(solver->time_step(), 10) +
+                               " s; this run's is " + fmt(time_step, 10) +
+                               " s (another executable?)."));
+      }
+    else
+      solver->save(ar);
+    bool has = contact != nullptr;
+    ar.pod(has);
+    AssertThrow(has == (contact != nullptr),
+                ExcMessage("The checkpoint's contact setting differs."));
+    if constexpr (Archive::is_loading)
+      {
+        if (contact)
+          contact->load(ar);
+      }
+    else if (contact)
+      contact->save(ar);
+    has = wheelset != nullptr;
+    ar.pod(has);
+    AssertThrow(has == (wheelset != nullptr),
+                ExcMessage("The checkpoint's wheelset setting differs."));
+    if constexpr (Archive::is_loading)
+      {
+        if (wheelset)
+          wheelset->load(ar);
+      }
+    else if (wheelset)
+      wheelset->save(ar);
+    for (Postprocessor *postprocessor : checkpointed)
+      if constexpr (Archive::is_loading)
+        postprocessor->load(ar);
+      else
+        postprocessor->save(ar);
+  }
 
 
 
@@ -69,41 +109,7 @@ namespace WheelRail
       header.time_step  = solver->time_step();
       header.parameters = parameter_record;
       Checkpoint::write_header(out, header);
-      solver->save(out);
-      out.pod(contact != nullptr);
-      if (contact)
-        contact->save(out);
-      out.pod(wheelset != nullptr);
-      if (wheelset)
-        wheelset->save(out);
-      std::ostringstream table;
-      {
-        boost::archive::binary_oarchive archive(table);
-        archive << statistics;
-      }
-      out.string(table.str());
-      out.pod<std::uint64_t>(vtu_records.size());
-      for (const auto &r : vtu_records)
-        {
-          out.pod(r.first);
-          out.string(r.second);
-        }
-      out.pod(vtu_counter);
-      out.pod<std::uint64_t>(probes.size());
-      for (const Probe &probe : probes)
-        out.vector(probe.history);
-      out.pod(previous_patch_centre);
-      out.pod(next_snapshot);
-      out.pod(initial_energies);
-      out.pod(have_initial_energies);
-      out.pod(max_balance_error);
-      out.pod(hourglass_time_integral);
-      out.pod(hourglass_ref_time_integral);
-      out.pod(internal_time_integral);
-      out.pod(max_hourglass_ratio_actual);
-      out.vector(samples);
-      out.pod(friction_violations);
-      out.pod(most_contact_nodes);
+      serialize(out);
       out.pod(Checkpoint::magic);
       out.finish();
       file.flush();
@@ -227,55 +233,7 @@ namespace WheelRail
                            std::to_string(triangulation.n_global_active_cells()) + " and " +
                            std::to_string(solver->get_dof_handler().n_dofs()) +
                            ": resume with the same parameters, rank count and executable."));
-    const double time_step = solver->time_step();
-    solver->load(in);
-    AssertThrow(solver->time_step() == time_step,
-                ExcMessage("The checkpoint '" + name + "' was written with the time step " +
-                           fmt(solver->time_step(), 10) + " s; this run's is " +
-                           fmt(time_step, 10) + " s (another executable?)."));
-    bool has = false;
-    in.pod(has);
-    AssertThrow(has == (contact != nullptr),
-                ExcMessage("The checkpoint's contact setting differs."));
-    if (contact)
-      contact->load(in);
-    in.pod(has);
-    AssertThrow(has == (wheelset != nullptr),
-                ExcMessage("The checkpoint's wheelset setting differs."));
-    if (wheelset)
-      wheelset->load(in);
-    std::string table;
-    in.string(table);
-    {
-      std::istringstream              stream(table);
-      boost::archive::binary_iarchive archive(stream);
-      archive >> statistics;
-    }
-    std::uint64_t n = 0;
-    in.pod(n);
-    vtu_records.resize(n);
-    for (auto &r : vtu_records)
-      {
-        in.pod(r.first);
-        in.string(r.second);
-      }
-    in.pod(vtu_counter);
-    in.pod(n);
-    AssertThrow(n == probes.size(), ExcMessage("The checkpoint's probes differ."));
-    for (Probe &probe : probes)
-      in.vector(probe.history);
-    in.pod(previous_patch_centre);
-    in.pod(next_snapshot);
-    in.pod(initial_energies);
-    in.pod(have_initial_energies);
-    in.pod(max_balance_error);
-    in.pod(hourglass_time_integral);
-    in.pod(hourglass_ref_time_integral);
-    in.pod(internal_time_integral);
-    in.pod(max_hourglass_ratio_actual);
-    in.vector(samples);
-    in.pod(friction_violations);
-    in.pod(most_contact_nodes);
+    serialize(in);
     std::uint64_t magic = 0;
     in.pod(magic);
     AssertThrow(magic == Checkpoint::magic,

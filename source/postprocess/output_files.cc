@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/output_files.h>
+#include <wheelrail/postprocess/output_files.h>
 
 #include <fcntl.h>
 #include <sys/file.h>

@@ -1,0 +1,83 @@
+/**
+ * @file postprocess/contact_patch.h
+ * The contact patch: its centre, the micro-slip of its trailing part, the
+ * per-node state (contact_nodes.csv), the snapshots of SPEC 5.5 and the
+ * summary at the end of a rolling run.
+ */
+#ifndef wheelrail_postprocess_contact_patch_h
+#define wheelrail_postprocess_contact_patch_h
+
+#include <wheelrail/postprocess/postprocessor.h>
+
+#include <limits>
+#include <string>
+
+namespace WheelRail
+{
+  /** Force-weighted mean x of the contact nodes (NaN without contact). */
+  double
+  patch_centre(const PenaltyContact &contact);
+
+  /** Means over the contact nodes behind the patch centre. */
+  struct TrailingSlip
+  {
+    double         magnitude = 0; ///< of the micro-slip s_n = |de| / dt [m/s]
+    Tensor<1, dim> rate;          ///< of the relative velocity de / dt [m/s]
+  };
+  TrailingSlip
+  trailing_micro_slip(const PenaltyContact &contact);
+
+  /** Per-node contact state of the slave surface as CSV (SPEC 6 columns)
+   *  in OUTDIR/@p name. */
+  void
+  write_contact_nodes(const SimulatorAccess &access, const std::string &name);
+
+  /**
+   * Contact-patch snapshots at the instants of SPEC 5.5: when the patch
+   * centre passes x = -V dt_s, 0, +V dt_s (dt_s = 5.7 us), the rail-top
+   * nodes of the solution zone as patch_NAME.csv and patch_NAME.vtu.
+   * Active with a wheelset and contact.
+   */
+  class ContactPatch : public Postprocessor
+  {
+  public:
+    explicit ContactPatch(const SimulatorAccess &access);
+
+    void
+    execute(const StepInfo &step) override;
+
+    /** The short human summary of the contact at the end of a rolling run
+     *  (not in the robust output of a round-off sensitive test). */
+    void
+    print_summary() const;
+
+    void
+    save(Checkpoint::Writer &out) override
+    {
+      serialize(out);
+    }
+    void
+    load(Checkpoint::Reader &in) override
+    {
+      serialize(in);
+    }
+    template <class Archive>
+    void
+    serialize(Archive &ar)
+    {
+      ar.pod(previous_centre);
+      ar.pod(next_snapshot);
+    }
+
+  private:
+    /** Write the snapshot @p name (t-5.7us, t, t+5.7us) at @p centre. */
+    void
+    write_snapshot(const std::string &name, const double centre) const;
+
+    const SimulatorAccess &access;
+    double                 previous_centre = -std::numeric_limits<double>::max();
+    unsigned int           next_snapshot   = 0;
+  };
+} // namespace WheelRail
+
+#endif

@@ -1,0 +1,50 @@
+/**
+ * @file postprocess/statistics.h
+ * OUTDIR/statistics: one row per statistics step (time, wheel position,
+ * contact forces, energies, energy balance; SPEC 7).
+ */
+#ifndef wheelrail_postprocess_statistics_h
+#define wheelrail_postprocess_statistics_h
+
+#include <deal.II/base/table_handler.h>
+
+#include <wheelrail/postprocess/energy_balance.h>
+#include <wheelrail/postprocess/postprocessor.h>
+
+namespace WheelRail
+{
+  /** The statistics table; the balance columns come from @p balance, which
+   *  must have executed the same step before. */
+  class Statistics : public Postprocessor
+  {
+  public:
+    Statistics(const SimulatorAccess &access, const EnergyBalance &balance);
+
+    /** At a statistics step: add the row; at a report step also write the
+     *  file. */
+    void
+    execute(const StepInfo &step) override;
+
+    void
+    write_files() const override;
+
+    void
+    save(Checkpoint::Writer &out) override;
+    void
+    load(Checkpoint::Reader &in) override;
+    /** The table as one string (TableHandler's boost serialization). */
+    template <class Archive>
+    void
+    serialize(Archive &ar);
+
+  private:
+    void
+    add_row(const Energies &e);
+
+    const SimulatorAccess &access;
+    const EnergyBalance   &balance;
+    TableHandler           table;
+  };
+} // namespace WheelRail
+
+#endif

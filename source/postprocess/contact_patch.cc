@@ -1,0 +1,248 @@
+#include <wheelrail/postprocess/contact_patch.h>
+#include <wheelrail/simulator/format.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace WheelRail
+{
+  using Report::fmt;
+
+
+
+  double
+  patch_centre(const PenaltyContact &contact)
+  {
+    double fn = 0, fx = 0;
+    for (const auto &s : contact.slave_states())
+      if (s.in_contact)
+        {
+          fn += s.normal_force;
+          fx += s.normal_force * s.x[0];
+        }
+    return fn > 0 ? fx / fn : std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  TrailingSlip
+  trailing_micro_slip(const PenaltyContact &contact)
+  {
+    TrailingSlip result;
+    const double centre = patch_centre(contact);
+    if (std::isnan(centre))
+      return result;
+    unsigned int n = 0;
+    for (const auto &s : contact.slave_states())
+      if (s.in_contact && s.x[0] < centre)
+        {
+          result.magnitude += s.slip_velocity;
+          result.rate += s.slip_rate;
+          ++n;
+        }
+    if (n > 0)
+      {
+        result.magnitude /= n;
+        result.rate /= n;
+      }
+    return result;
+  }
+
+
+
+  void
+  write_contact_nodes(const SimulatorAccess &access, const std::string &name)
+  {
+    // replicated on every rank: rank 0 writes
+    const auto &states = access.contact->slave_states();
+    double      max_ft = 0;
+    for (const auto &s : states)
+      max_ft = std::max(max_ft, s.tangential_force.norm());
+    const double       eps_t = 0.003 * max_ft; // SPEC 6, eq. 5
+    const double       eps_s = 0.05;           // m/s, eq. 6
+    std::ostringstream out;
+    out << std::setprecision(9) << "# slave-node contact state at t = " << access.solver.time()
+        << " s; SI units; x, y, z current position; adhesion by eq. 5 (f|F_n| - |F_t| > " << eps_t
+        << " N), slip by eq. 6 (s_n > " << eps_s << " m/s)\n"
+        << "X,Y,Z,x,y,z,in_contact,gap,F_n,F_t_x,F_t_y,F_t_z,area,pressure,shear_x,shear,"
+           "slip_velocity,cof,adhesion_eq5,slip_eq6\n";
+    for (const auto &s : states)
+      if (s.in_contact || s.gap < access.parameters.contact.search_margin)
+        {
+          const double shear = s.area > 0 ? s.tangential_force.norm() / s.area : 0.;
+          out << s.X[0] << ',' << s.X[1] << ',' << s.X[2] << ',' << s.x[0] << ',' << s.x[1] << ','
+              << s.x[2] << ',' << s.in_contact << ',' << s.gap << ',' << s.normal_force << ','
+              << s.tangential_force[0] << ',' << s.tangential_force[1] << ','
+              << s.tangential_force[2] << ',' << s.area << ',' << s.pressure() << ','
+              << (s.area > 0 ? s.tangential_force[0] / s.area : 0.) << ',' << shear << ','
+              << s.slip_velocity << ',' << s.cof << ','
+              << (s.in_contact && s.cof * s.normal_force - s.tangential_force.norm() > eps_t) << ','
+              << (s.in_contact && s.slip_velocity > eps_s) << '\n';
+        }
+    access.write_file(name, out.str());
+  }
+
+
+
+  ContactPatch::ContactPatch(const SimulatorAccess &access)
+    : access(access)
+  {}
+
+
+
+  void
+  ContactPatch::execute(const StepInfo &)
+  {
+    if (!access.wheelset || !access.contact)
+      return;
+    const double centre = patch_centre(*access.contact);
+    if (std::isnan(centre) || next_snapshot >= 3)
+      return;
+    const double dts = 5.7e-6; // s, the paper's 175 kHz sampling
+    const double target =
+      (static_cast<double>(next_snapshot) - 1.) * access.parameters.wheelset.rolling_speed * dts;
+    if (!(previous_centre < target && centre >= target))
+      {
+        previous_centre = centre;
+        return;
+      }
+    previous_centre        = centre;
+    const std::string name = next_snapshot == 0 ? "t-5.7us" : next_snapshot == 1 ? "t" : "t+5.7us";
+    ++next_snapshot;
+    write_snapshot(name, centre);
+  }
+
+
+
+  void
+  ContactPatch::write_snapshot(const std::string &name, const double centre) const
+  {
+    const GeometryParameters &g      = access.parameters.geometry;
+    const auto                states = access.contact->master_states();
+    double                    max_ft = 0;
+    for (const auto &m : states)
+      max_ft = std::max(max_ft, m.tangential_force.norm());
+    const double       eps_t = 0.003 * max_ft, eps_s = 0.05;
+    std::ostringstream csv, vtu_points, vtu_data[6];
+    csv << std::setprecision(9) << "# contact patch at " << name << " (t = " << access.solver.time()
+        << " s, patch centre x = " << centre << " m): rail-top nodes of the solution zone; SI "
+        << "units; adhesion eq. 5 (f|F_n| - |F_t| > " << eps_t << " N), slip eq. 6 (s_n > " << eps_s
+        << " m/s)\n"
+        << "x,y,in_contact,pressure,shear_x,shear,slip_velocity,cof,adhesion_eq5,slip_eq6,"
+           "F_n,area\n";
+    unsigned int n_points = 0, n_contact = 0, n_slip = 0;
+    double       p_max = 0, s_max = 0, x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
+    for (const auto &m : states)
+      {
+        if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
+            std::abs(m.X[1]) > g.zone_half_width + 1e-9 || m.area <= 0)
+          continue;
+        const bool   in     = m.normal_force > 0;
+        const double p      = m.normal_force / m.area;
+        const double shear  = m.tangential_force.norm() / m.area;
+        const bool   adhere = in && m.cof * m.normal_force - m.tangential_force.norm() > eps_t;
+        const bool   slip   = in && m.slip_velocity > eps_s;
+        csv << m.X[0] << ',' << m.X[1] << ',' << in << ',' << p << ','
+            << m.tangential_force[0] / m.area << ',' << shear << ',' << m.slip_velocity << ','
+            << m.cof << ',' << adhere << ',' << slip << ',' << m.normal_force << ',' << m.area
+            << '\n';
+        vtu_points << m.X[0] << ' ' << m.X[1] << ' ' << m.X[2] << '\n';
+        const double values[6] = {p,
+                                  m.tangential_force[0] / m.area,
+                                  shear,
+                                  m.slip_velocity,
+                                  m.cof,
+                                  double(in) + double(in && !adhere)};
+        for (unsigned int k = 0; k < 6; ++k)
+          vtu_data[k] << values[k] << '\n';
+        ++n_points;
+        if (in)
+          {
+            ++n_contact;
+            n_slip += !adhere;
+            p_max = std::max(p_max, p);
+            s_max = std::max(s_max, shear);
+            x_min = std::min(x_min, m.X[0]);
+            x_max = std::max(x_max, m.X[0]);
+            y_min = std::min(y_min, m.X[1]);
+            y_max = std::max(y_max, m.X[1]);
+          }
+      }
+    access.write_file("patch_" + name + ".csv", csv.str());
+
+    // the same nodes as VTU points for ParaView
+    std::ostringstream vtu;
+    vtu << std::setprecision(9)
+        << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+        << "<UnstructuredGrid><Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\""
+        << n_points << "\">\n<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+        << "format=\"ascii\">\n"
+        << vtu_points.str() << "</DataArray></Points>\n<Cells>\n"
+        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n_points; ++i)
+      vtu << i << '\n';
+    vtu << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n_points; ++i)
+      vtu << i + 1 << '\n';
+    vtu << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (unsigned int i = 0; i < n_points; ++i)
+      vtu << "1\n";
+    vtu << "</DataArray>\n</Cells>\n<PointData>\n";
+    const char *names[6] = {"pressure_Pa",
+                            "shear_x_Pa",
+                            "shear_Pa",
+                            "slip_velocity_m_s",
+                            "cof",
+                            "state_0free_1adhesion_2slip"};
+    for (unsigned int k = 0; k < 6; ++k)
+      vtu << "<DataArray type=\"Float64\" Name=\"" << names[k] << "\" format=\"ascii\">\n"
+          << vtu_data[k].str() << "</DataArray>\n";
+    vtu << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
+    access.write_file("patch_" + name + ".vtu", vtu.str());
+
+    if (access.robust_output_only())
+      return;
+    access.pcout << "Contact patch at " << name << " (t = " << fmt(access.solver.time() * 1e3, 6)
+                 << " ms): " << n_contact << " rail-top nodes in contact, x from "
+                 << fmt(x_min * 1e3, 4) << " to " << fmt(x_max * 1e3, 4) << " mm, y from "
+                 << fmt(y_min * 1e3, 4) << " to " << fmt(y_max * 1e3, 4) << " mm, peak pressure "
+                 << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
+                 << " MPa, slip (eq. 5) " << n_slip << " of " << n_contact << " nodes" << std::endl;
+  }
+
+
+
+  void
+  ContactPatch::print_summary() const
+  {
+    if (!access.wheelset || !access.contact || access.robust_output_only())
+      return;
+    const ContactSummary &cs    = access.contact->summary();
+    double                p_max = 0, s_max = 0, x0 = 1e30, x1 = -1e30, y0 = 1e30, y1 = -1e30;
+    for (const auto &s : access.contact->slave_states())
+      if (s.in_contact)
+        {
+          p_max = std::max(p_max, s.pressure());
+          s_max = std::max(s_max, s.area > 0 ? s.tangential_force.norm() / s.area : 0.);
+          x0    = std::min(x0, s.x[0]);
+          x1    = std::max(x1, s.x[0]);
+          y0    = std::min(y0, s.x[1]);
+          y1    = std::max(y1, s.x[1]);
+        }
+    if (cs.n_contact == 0)
+      x0 = x1 = y0 = y1 = 0;
+    access.pcout << "Summary at t = " << fmt(access.solver.time() * 1e3, 6)
+                 << " ms (wheel x = " << fmt(access.wheelset->axle_position()[0] * 1e3, 6)
+                 << " mm): F_N " << fmt(cs.force[2] * 1e-3, 5) << " kN, F_L "
+                 << fmt(cs.force[0] * 1e-3, 5) << " kN, mu_a "
+                 << fmt(cs.force[2] != 0 ? cs.force[0] / cs.force[2] : 0., 4) << "; patch "
+                 << fmt((x1 - x0) * 1e3, 4) << " x " << fmt((y1 - y0) * 1e3, 4)
+                 << " mm (node extent), " << cs.n_contact << " nodes, peak pressure "
+                 << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
+                 << " MPa, slip fraction "
+                 << fmt(cs.n_contact ? double(cs.n_slip) / cs.n_contact : 0., 3)
+                 << ", trailing micro-slip "
+                 << fmt(trailing_micro_slip(*access.contact).magnitude, 4) << " m/s" << std::endl;
+  }
+} // namespace WheelRail

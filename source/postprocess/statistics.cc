@@ -1,0 +1,137 @@
+#include <deal.II/base/utilities.h>
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
+#include <wheelrail/geometry.h>
+#include <wheelrail/postprocess/contact_patch.h>
+#include <wheelrail/postprocess/statistics.h>
+
+#include <sstream>
+
+namespace WheelRail
+{
+  Statistics::Statistics(const SimulatorAccess &access, const EnergyBalance &balance)
+    : access(access)
+    , balance(balance)
+  {}
+
+
+
+  void
+  Statistics::execute(const StepInfo &step)
+  {
+    if (step.energies == nullptr)
+      return;
+    add_row(*step.energies);
+    if (step.report_step)
+      write_files();
+  }
+
+
+
+  void
+  Statistics::add_row(const Energies &e)
+  {
+    const auto add = [&](const std::string &key, const double value) {
+      table.add_value(key, value);
+      table.set_scientific(key, true);
+      table.set_precision(key, 8);
+    };
+    table.add_value("step", static_cast<unsigned int>(e.step));
+    add("time [s]", e.time);
+    if (access.wheelset)
+      {
+        add("wheel x [m]", access.wheelset->axle_position()[0]);
+        add("axle z [m]", access.wheelset->axle_position()[2]);
+        add("omega [rad/s]", access.wheelset->angular_velocity());
+      }
+    else if (access.parameters.problem.geometry == "wheel and rail")
+      {
+        const Tensor<1, dim> ub = access.solver.bore_displacement();
+        const Point<dim>     c  = Geometry::wheel_centre(access.parameters.geometry);
+        add("wheel x [m]", c[0] + ub[0]);
+        add("axle z [m]", c[2] + ub[2]);
+      }
+    if (access.contact)
+      {
+        const ContactSummary &cs = access.contact->summary();
+        add("F_N [N]", cs.force[2]);
+        add("F_L [N]", cs.force[0]);
+        add("F_lateral [N]", cs.force[1]);
+        add("mu_a [-]", cs.force[2] != 0 ? cs.force[0] / cs.force[2] : 0.);
+        table.add_value("contact nodes", cs.n_contact);
+        table.add_value("slip nodes", cs.n_slip);
+        add("max penetration [m]", cs.max_penetration);
+        const TrailingSlip trailing = trailing_micro_slip(*access.contact);
+        add("trailing micro-slip [m/s]", trailing.magnitude);
+        add("trailing slip rate x [m/s]", trailing.rate[0]);
+        add("trailing slip rate y [m/s]", trailing.rate[1]);
+      }
+    add("kinetic [J]", e.kinetic);
+    add("internal [J]", e.internal);
+    add("hourglass [J]", e.hourglass);
+    add("damping dissipation [J]", e.damping);
+    if (access.contact)
+      {
+        add("contact energy [J]", e.contact);
+        add("friction dissipation [J]", e.friction);
+      }
+    add("external work [J]", e.external_work);
+    add("balance [J]", balance.balance());
+    add("balance error [-]", balance.balance_error());
+  }
+
+
+
+  void
+  Statistics::write_files() const
+  {
+    std::ostringstream out;
+    out << "# wheelrail statistics: SI units; energies of the whole model; balance = "
+           "kinetic + internal + hourglass + damping - external work - its initial value\n";
+    table.write_text(out, TableHandler::table_with_separate_column_description);
+    access.write_file("statistics", out.str());
+  }
+
+
+
+  template <class Archive>
+  void
+  Statistics::serialize(Archive &ar)
+  {
+    std::string bytes;
+    if constexpr (!Archive::is_loading)
+      {
+        std::ostringstream stream;
+        {
+          boost::archive::binary_oarchive archive(stream);
+          archive << table;
+        }
+        bytes = stream.str();
+      }
+    ar.string(bytes);
+    if constexpr (Archive::is_loading)
+      {
+        std::istringstream              stream(bytes);
+        boost::archive::binary_iarchive archive(stream);
+        archive >> table;
+      }
+  }
+
+
+
+  void
+  Statistics::save(Checkpoint::Writer &out)
+  {
+    serialize(out);
+  }
+
+
+
+  void
+  Statistics::load(Checkpoint::Reader &in)
+  {
+    serialize(in);
+  }
+} // namespace WheelRail

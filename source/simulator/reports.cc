@@ -1,0 +1,165 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/simulator/format.h>
+#include <wheelrail/simulator/simulator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace WheelRail
+{
+  using Report::fmt;
+
+
+
+  void
+  Simulator::report(const Energies &e, const double wall_seconds) const
+  {
+    if (access->robust_output_only())
+      return;
+    pcout << "step " << std::setw(8) << e.step << "  t = " << std::setw(10) << fmt(e.time * 1e3)
+          << " ms  E_kin " << fmt(e.kinetic) << " J  E_int " << fmt(e.internal) << " J  E_hg "
+          << fmt(e.hourglass, 3) << " J  D " << fmt(e.damping, 3) << " J  W_ext "
+          << fmt(e.external_work) << " J";
+    if (contact)
+      pcout << "  contact " << contact->summary().n_contact << " nodes, F = ("
+            << fmt(contact->summary().force[0] * 1e-3, 4) << ", "
+            << fmt(contact->summary().force[1] * 1e-3, 4) << ", "
+            << fmt(contact->summary().force[2] * 1e-3, 4) << ") kN  E_c " << fmt(e.contact, 3)
+            << " J  D_f " << fmt(e.friction, 3) << " J";
+    pcout << "  balance error " << fmt(energy_balance->max_balance_error(), 2);
+    if (!parameters.problem.test_mode)
+      {
+        // progress of a long run: steps per second and the time to finish
+        const double rate  = e.step / std::max(wall_seconds, 1e-9);
+        const double total = std::ceil(parameters.solver.end_time / solver->time_step() - 1e-9);
+        pcout << "  [" << fmt(wall_seconds, 3) << " s, " << fmt(rate, 3) << " steps/s";
+        if (e.step > 0)
+          pcout << ", " << fmt(100. * e.step / total, 3) << " %, ETA "
+                << fmt((total - e.step) / rate, 3) << " s";
+        pcout << "]";
+      }
+    pcout << std::endl;
+  }
+
+
+
+  void
+  Simulator::report_timing(const double         wall_seconds,
+                           const double         output_seconds,
+                           const unsigned long  n_steps,
+                           std::vector<double> &step_seconds) const
+  {
+    const StepTimes   &t       = solver->step_times();
+    const double       cells   = triangulation.n_global_active_cells();
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    // the slowest rank sets the pace: maxima over the ranks
+    const double local[6] = {
+      t.elements, t.contact, t.update, t.communication, t.energies, output_seconds};
+    double slowest[6], fastest[6];
+    Utilities::MPI::max(ArrayView<const double>(local, 6),
+                        mpi_communicator,
+                        ArrayView<double>(slowest, 6));
+    Utilities::MPI::min(ArrayView<const double>(local, 6),
+                        mpi_communicator,
+                        ArrayView<double>(fastest, 6));
+    const double                         wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
+    const Utilities::System::MemoryStats memory = [] {
+      Utilities::System::MemoryStats m;
+      Utilities::System::get_memory_stats(m);
+      return m;
+    }();
+    const double       peak_mb = Utilities::MPI::max(memory.VmHWM / 1024., mpi_communicator);
+    const unsigned int family_cells =
+      Utilities::MPI::sum(solver->n_family_cells(), mpi_communicator);
+    const double ns = n_steps > 0 ? wall / (cells * n_steps) * 1e9 : 0.;
+    // the paper's full run: 0.22 m of rolling at 2.6e-8 s
+    const double full_steps = 0.22 / parameters.wheelset.rolling_speed / 2.6e-8;
+    const double full_hours = ns * 1e-9 * cells * full_steps / 3600.;
+    const char *names[6] = {"elements", "contact", "update", "communication", "energies", "output"};
+
+    pcout << "Timing of " << n_steps << " steps (after " << parameters.output.timing_warmup_steps
+          << " warm-up steps) on " << n_ranks << " rank(s), " << fmt(cells, 8) << " cells, "
+          << solver->get_dof_handler().n_dofs() << " DoFs:" << std::endl
+          << "  wall " << fmt(wall, 4) << " s, " << fmt(ns, 4) << " ns per element-step (wall), "
+          << fmt(ns * n_ranks, 4) << " ns per element-step per rank" << std::endl
+          << "  cells in family batches (8 children of one parent: 27 nodes gathered "
+             "and scattered, not 64): "
+          << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl
+          << "  split (slowest rank, s):";
+    for (unsigned int i = 0; i < 6; ++i)
+      pcout << " " << names[i] << " " << fmt(slowest[i], 4);
+    if (n_ranks > 1)
+      {
+        // the imbalance: what a fast rank's parts wait for shows up in the
+        // next part that communicates (the contact's position gather)
+        pcout << std::endl << "  split (fastest rank, s):";
+        for (unsigned int i = 0; i < 6; ++i)
+          pcout << " " << names[i] << " " << fmt(fastest[i], 4);
+      }
+    pcout << std::endl;
+    if (contact)
+      {
+        // the contact's parts, slowest and fastest rank (with one rank the
+        // same): where the contact time goes and what does not scale
+        const ContactTimes &c     = contact->times();
+        const double parts[6]     = {c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces};
+        const char *part_names[6] = {"search", "wait", "positions", "slaves", "exchange", "forces"};
+        double      most[6], least[6];
+        Utilities::MPI::max(ArrayView<const double>(parts, 6),
+                            mpi_communicator,
+                            ArrayView<double>(most, 6));
+        Utilities::MPI::min(ArrayView<const double>(parts, 6),
+                            mpi_communicator,
+                            ArrayView<double>(least, 6));
+        pcout << "  contact split (slowest / fastest rank, s):";
+        for (unsigned int i = 0; i < 6; ++i)
+          pcout << " " << part_names[i] << " " << fmt(most[i], 3) << " / " << fmt(least[i], 3);
+        pcout << std::endl;
+      }
+    // The wall time of single steps (this machine's noise: on a shared
+    // host the same step's time varies by tens of per cent, and with
+    // several ranks each step waits for the slowest): fastest, median and
+    // 95th percentile, each the largest over the ranks, in ms
+    double spread[3] = {0, 0, 0};
+    if (!step_seconds.empty())
+      {
+        const auto at = [&](const double q) {
+          const std::size_t k =
+            std::min<std::size_t>(step_seconds.size() - 1, q * step_seconds.size());
+          std::nth_element(step_seconds.begin(), step_seconds.begin() + k, step_seconds.end());
+          return 1e3 * step_seconds[k];
+        };
+        const double local[3] = {at(0.), at(0.5), at(0.95)};
+        Utilities::MPI::max(ArrayView<const double>(local, 3),
+                            mpi_communicator,
+                            ArrayView<double>(spread, 3));
+        pcout << "  step wall time (ms): fastest " << fmt(spread[0], 4) << ", median "
+              << fmt(spread[1], 4) << ", 95th percentile " << fmt(spread[2], 4) << std::endl;
+      }
+    pcout << "  peak memory per rank " << fmt(peak_mb, 5) << " MB" << std::endl
+          << "  the paper's full run (" << fmt(full_steps, 6)
+          << " steps of 2.6e-8 s) at this rate on " << fmt(cells, 8)
+          << " cells: " << fmt(full_hours, 3) << " h" << std::endl;
+
+    std::ostringstream csv;
+    csv
+      << "# wheelrail timing: wall seconds of the timed steps (slowest rank), ns per element-step "
+         "(wall), peak resident memory per rank (largest) in MB\n"
+      << "ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,"
+         "communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,"
+         "fastest_step_ms,median_step_ms,p95_step_ms\n"
+      << n_ranks << "," << cells << "," << solver->get_dof_handler().n_dofs() << "," << n_steps
+      << "," << wall << "," << ns;
+    for (unsigned int i = 0; i < 6; ++i)
+      csv << "," << slowest[i];
+    csv << "," << peak_mb << "," << full_hours;
+    for (unsigned int i = 0; i < 3; ++i)
+      csv << "," << spread[i];
+    csv << "\n";
+    access->write_file("timing.csv", csv.str());
+  }
+} // namespace WheelRail

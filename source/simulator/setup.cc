@@ -1,0 +1,257 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <wheelrail/geometry.h>
+#include <wheelrail/simulator/format.h>
+#include <wheelrail/simulator/simulator.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <sstream>
+
+namespace WheelRail
+{
+  using Report::fmt;
+
+  namespace
+  {
+    /** The parameters as ParameterHandler prints them in @p style. */
+    std::string
+    print_parameters(const ParameterHandler &prm, const ParameterHandler::OutputStyle style)
+    {
+      std::ostringstream out;
+      prm.print_parameters(out, style);
+      return out.str();
+    }
+  } // namespace
+
+
+
+  Simulator::Simulator(const Parameters &parameters, const ParameterHandler &prm, MPI_Comm comm)
+    : parameters(parameters)
+    , parameter_file(print_parameters(prm, ParameterHandler::PRM))
+    , parameter_record(print_parameters(prm, ParameterHandler::ShortPRM))
+    , mpi_communicator(comm)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
+    , triangulation(comm)
+    , output_directory(parameters.problem.output_directory)
+  {
+    prepare_output_directory();
+  }
+
+
+
+  std::ostream &
+  Simulator::solver_log()
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0 && !parameters.problem.test_mode)
+      return std::cout;
+    silent_log.str("");
+    return silent_log;
+  }
+
+
+
+  void
+  Simulator::prepare_output_directory()
+  {
+    // a resumed run continues in its directory: none means a wrong name
+    AssertThrow(!parameters.output.resume || std::filesystem::is_directory(output_directory),
+                ExcMessage("--resume: Problem/Output directory '" + output_directory +
+                           "' does not exist: no checkpoint to resume from."));
+    int         ok = 1;
+    std::string message;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      {
+        std::error_code ec;
+        std::filesystem::create_directories(output_directory, ec);
+        if (ec)
+          {
+            ok      = 0;
+            message = ec.message();
+          }
+      }
+    ok = Utilities::MPI::min(ok, mpi_communicator);
+    AssertThrow(ok,
+                ExcMessage("Cannot create Problem/Output directory '" + output_directory +
+                           "': " + message));
+    // rank 0 holds the lock; a directory in use stops every rank
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      try
+        {
+          lock = std::make_unique<DirectoryLock>(output_directory, "Problem/Output directory");
+          if (!lock->warning().empty())
+            std::cerr << "Warning: " << lock->warning() << std::endl;
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          error = info.str();
+        }
+    throw_first_error(error, mpi_communicator);
+  }
+
+
+
+  void
+  Simulator::run()
+  {
+    pcout << "wheelrail: geometry '" << parameters.problem.geometry << "', mode '"
+          << parameters.problem.mode << "'";
+    if (!parameters.problem.test_mode)
+      pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator) << " MPI rank(s)";
+    pcout << std::endl;
+    if (parameters.output.resume)
+      check_checkpoint();
+
+    Geometry::build(parameters.geometry, parameters.problem.geometry, triangulation);
+    solver = std::make_unique<ExplicitSolver>(parameters, triangulation);
+    solver->setup();
+    if (parameters.contact.enabled && parameters.problem.geometry != "bar")
+      {
+        contact = std::make_unique<PenaltyContact>(parameters.contact,
+                                                   parameters.material,
+                                                   mpi_communicator);
+        contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->lumped_mass());
+        solver->attach_contact(contact.get());
+      }
+    if (parameters.problem.geometry == "wheel and rail" &&
+        parameters.boundary.wheel_bore == "rigid axle")
+      {
+        wheelset = std::make_unique<Wheelset>(parameters.wheelset,
+                                              parameters.solver,
+                                              Geometry::wheel_centre(parameters.geometry));
+        solver->attach_wheelset(wheelset.get());
+      }
+    access = std::make_unique<SimulatorAccess>(SimulatorAccess{parameters,
+                                                               mpi_communicator,
+                                                               pcout,
+                                                               output_directory,
+                                                               triangulation,
+                                                               *solver,
+                                                               contact.get(),
+                                                               wheelset.get()});
+
+    if (parameters.solver.time_step > 0)
+      {
+        AssertThrow(parameters.solver.time_step <= solver->stable_time_step() * (1 + 1e-12),
+                    ExcMessage("Time integration/Time step = " + fmt(parameters.solver.time_step) +
+                               " s exceeds the stable step " + fmt(solver->stable_time_step()) +
+                               " s (Courant factor x min L_e/c with the damping reduction): "
+                               "the explicit run would blow up. Reduce the time step, or "
+                               "coarsen Geometry/Mesh/Minimum cell size."));
+        solver->set_time_step(parameters.solver.time_step);
+      }
+    else
+      solver->set_time_step(solver->stable_time_step());
+
+    // the setup has succeeded: from here on the run owns the directory's
+    // files (a rejected run leaves the previous run's parameters.prm)
+    access->write_file("parameters.prm", parameter_file);
+    print_setup_summary();
+    if (parameters.problem.dry_run)
+      {
+        pcout << "Dry run: stopping after the setup." << std::endl;
+        return;
+      }
+    if (parameters.problem.mode == "explicit dynamics")
+      run_explicit();
+    else if (parameters.problem.mode == "static contact")
+      run_static_contact();
+    else
+      run_static_check();
+  }
+
+
+
+  void
+  Simulator::print_setup_summary()
+  {
+    const MeshQuality &q = solver->mesh_quality();
+    const double       c = parameters.material.wave_speed();
+    pcout << "Mesh" << std::endl
+          << "  cells                        : " << triangulation.n_global_active_cells()
+          << std::endl
+          << "  DoFs                         : " << solver->get_dof_handler().n_dofs() << std::endl
+          << "  h_min (smallest cell size)   : " << fmt(q.min_longest_edge * 1e3) << " mm"
+          << std::endl
+          << "  shortest edge                : " << fmt(q.min_edge * 1e3) << " mm" << std::endl
+          << "  smallest L_e = V/A_max       : " << fmt(q.min_length * 1e3) << " mm" << std::endl
+          << "  smallest scaled Jacobian     : " << fmt(q.min_scaled_jacobian, 4) << std::endl
+          << "  largest aspect ratio         : " << fmt(q.max_aspect_ratio, 4) << std::endl;
+    if (parameters.problem.geometry == "wheel and rail")
+      for (const auto &[id, name] : {std::pair{Geometry::MaterialIds::wheel, "wheel"},
+                                     std::pair{Geometry::MaterialIds::rail, "rail "}})
+        {
+          const Geometry::ZoneCells z =
+            Geometry::zone_cells(parameters.geometry, id, triangulation);
+          pcout << "  solution zone, " << name << "        : ";
+          if (z.n_cells == 0)
+            pcout << "none" << std::endl;
+          else
+            pcout << z.n_cells << " cells, longest edge " << fmt(z.max_longest_edge * 1e3) << " mm"
+                  << std::endl;
+        }
+
+    pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
+    std::vector<std::pair<types::material_id, std::string>> bodies;
+    if (parameters.problem.geometry == "bar")
+      bodies = {{Geometry::MaterialIds::bar, "bar"}};
+    else
+      bodies = {{Geometry::MaterialIds::wheel, "wheel"}, {Geometry::MaterialIds::rail, "rail"}};
+    const double rho = parameters.material.density;
+    for (const auto &body : bodies)
+      {
+        const double m      = solver->total_mass(body.first);
+        const double m_mesh = rho * solver->mesh_volume(body.first);
+        const double m_true = rho * Geometry::exact_volume(parameters.geometry, body.first);
+        pcout << "  " << std::left << std::setw(6) << body.second << std::right << " lumped mass "
+              << fmt(m, 8) << " kg, rho x mesh volume " << fmt(m_mesh, 8) << " kg (rel. error "
+              << fmt(std::abs(m - m_mesh) / m_mesh, 1) << "), rho x exact volume " << fmt(m_true, 8)
+              << " kg (rel. error " << fmt(std::abs(m - m_true) / m_true, 3) << ")" << std::endl;
+      }
+
+    const double dt = solver->time_step();
+    pcout << "Time integration" << std::endl
+          << "  dilatational wave speed c    : " << fmt(c) << " m/s" << std::endl
+          << "  stable step (Courant " << fmt(parameters.solver.courant_factor, 3)
+          << ")     : " << fmt(solver->stable_time_step() * 1e6) << " us" << std::endl
+          << "  step used                    : " << fmt(dt * 1e6) << " us" << std::endl
+          << "  Courant number c dt / L_e    : " << fmt(c * dt / q.min_length, 4) << std::endl
+          << "  hourglass coefficient QM     : " << fmt(parameters.solver.hourglass_coefficient)
+          << std::endl
+          << "  damping                      : " << parameters.solver.damping_model;
+    if (parameters.solver.damping_model == "stiffness")
+      pcout << " (COEF " << fmt(parameters.solver.stiffness_damping_coefficient) << ")";
+    else if (parameters.solver.damping_model == "Rayleigh")
+      pcout << " (beta " << fmt(parameters.solver.rayleigh_beta) << " s)";
+    pcout << std::endl;
+    if (contact)
+      {
+        const ContactParameters &cp = parameters.contact;
+        pcout << "Contact" << std::endl
+              << "  slave boundary " << cp.slave_boundary << " (" << contact->slave_states().size()
+              << " nodes), master boundary " << cp.master_boundary
+              << (cp.two_pass ? ", two-pass" : ", one-pass") << std::endl
+              << "  penalty scale factor SF    : " << fmt(cp.penalty_scale) << std::endl;
+        if (cp.penalty_stiffness == "area")
+          pcout << "  penalty stiffness          : k = SF K A / h_ref, h_ref = "
+                << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
+        pcout << "  friction law               : " << cp.friction_law;
+        if (cp.friction_law == "constant")
+          pcout << " (f = " << fmt(cp.static_coefficient) << ")";
+        else if (cp.friction_law == "exponential")
+          pcout << " (f_S = " << fmt(cp.static_coefficient)
+                << ", f_D = " << fmt(cp.dynamic_coefficient) << ", k = " << fmt(cp.decay)
+                << " s/m)";
+        pcout << std::endl;
+      }
+    if (parameters.problem.mode == "explicit dynamics")
+      pcout << "  steps                        : "
+            << static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9))
+            << " to t = " << fmt(parameters.solver.end_time * 1e3) << " ms" << std::endl;
+  }
+} // namespace WheelRail
