@@ -6,7 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <wheelrail/parameters.h>
+#include <wheelrail/parameters/parameters.h>
 #include <wheelrail/simulator/simulator.h>
 
 #include <algorithm>

@@ -12,8 +12,8 @@
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 
+#include <wheelrail/base/stopwatch.h>
 #include <wheelrail/contact/penalty_contact.h>
-#include <wheelrail/stopwatch.h>
 
 #include <algorithm>
 #include <cmath>

@@ -8,9 +8,9 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/base/stopwatch.h>
 #include <wheelrail/contact/bilinear_face.h>
 #include <wheelrail/contact/penalty_contact.h>
-#include <wheelrail/stopwatch.h>
 
 #include <algorithm>
 #include <cmath>

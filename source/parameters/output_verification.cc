@@ -7,7 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/checkpoint.h>
+#include <wheelrail/base/checkpoint.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/parameters/vector_entry.h>
 

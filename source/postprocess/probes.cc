@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/postprocess/probes.h>
 #include <wheelrail/simulator/format.h>

@@ -3,7 +3,7 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/postprocess/statistics.h>
 

@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/divergence_check.h>
 #include <wheelrail/simulator/format.h>
 

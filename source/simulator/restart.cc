@@ -7,7 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/checkpoint.h>
+#include <wheelrail/base/checkpoint.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 
@@ -241,12 +241,8 @@ namespace WheelRail
           pcout << "  penalty stiffness          : k = SF K A / h_ref, h_ref = "
                 << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
         pcout << "  friction law               : " << cp.friction_law;
-        if (cp.friction_law == "constant")
-          pcout << " (f = " << fmt(cp.static_coefficient) << ")";
-        else if (cp.friction_law == "exponential")
-          pcout << " (f_S = " << fmt(cp.static_coefficient)
-                << ", f_D = " << fmt(cp.dynamic_coefficient) << ", k = " << fmt(cp.decay)
-                << " s/m)";
+        if (const auto law = contact->friction_law())
+          pcout << " (" << law->describe([](const double x) { return fmt(x); }) << ")";
         pcout << std::endl;
       }
     if (parameters.problem.mode == "explicit dynamics")

@@ -2,10 +2,11 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
-#include <wheelrail/static_solver.h>
+#include <wheelrail/solver/st_venant_kirchhoff.h>
+#include <wheelrail/solver/static_solver.h>
 #include <wheelrail/verification/hertz_patch.h>
 
 #include <cmath>
@@ -50,11 +51,11 @@ namespace WheelRail
         const Tensor<2, dim> G = vp.displacement_gradient;
         solver->set_displacement([&](const Point<dim> &X) { return G * X; });
         solver->compute_internal_force(force);
-        const Tensor<2, dim> F  = unit_symmetric_tensor<dim>() + G;
-        const Tensor<2, dim> Ex = 0.5 * (transpose(F) * F - unit_symmetric_tensor<dim>());
         const Tensor<2, dim> Sx =
-          parameters.material.lambda() * trace(Ex) * Tensor<2, dim>(unit_symmetric_tensor<dim>()) +
-          2. * parameters.material.mu() * Ex;
+          StVenantKirchhoff::second_piola_kirchhoff_stress(StVenantKirchhoff::green_lagrange_strain(
+                                                             unit_symmetric_tensor<dim>() + G),
+                                                           parameters.material.lambda(),
+                                                           parameters.material.mu());
         double     max_stress_error = 0;
         const auto stresses         = solver->cell_stresses();
         for (const auto &cell : triangulation.active_cell_iterators())

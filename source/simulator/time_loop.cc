@@ -7,7 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 #include <wheelrail/verification/checks.h>

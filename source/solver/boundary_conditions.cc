@@ -6,7 +6,7 @@
  */
 #include <deal.II/base/mpi.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/boundary_conditions.h>
 
 #include <algorithm>

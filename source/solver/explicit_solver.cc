@@ -1,9 +1,9 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/base/stopwatch.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/explicit_solver.h>
-#include <wheelrail/stopwatch.h>
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
  */
 #include <deal.II/base/mpi.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/explicit_solver.h>
 
 #include <array>

@@ -12,7 +12,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/static_solver.h>
 
 #include <Teuchos_ParameterList.hpp>

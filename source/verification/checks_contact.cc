@@ -1,4 +1,4 @@
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/checks.h>
 
@@ -279,9 +279,7 @@ namespace WheelRail
         }
       const auto   law     = in.access.contact->friction_law();
       const double mu_n    = in.access.parameters.wheelset.traction_coefficient;
-      const double f_limit = in.access.parameters.contact.friction_law == "exponential" ?
-                               in.access.parameters.contact.dynamic_coefficient :
-                               law->coefficient(0.);
+      const double f_limit = law->sliding_coefficient();
       // below saturation: the torque also accelerates the wheel's
       // rotation as the traction accelerates the vehicle
       const double steady = in.access.wheelset->steady_traction_coefficient();

@@ -1,4 +1,4 @@
-#include <wheelrail/geometry.h>
+#include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/verification/samples.h>
 

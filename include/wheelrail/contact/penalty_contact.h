@@ -28,10 +28,10 @@
 
 #include <deal.II/lac/la_parallel_vector.h>
 
-#include <wheelrail/checkpoint.h>
+#include <wheelrail/base/checkpoint.h>
+#include <wheelrail/base/stopwatch.h>
 #include <wheelrail/contact/friction_law.h>
 #include <wheelrail/parameters/parameters.h>
-#include <wheelrail/stopwatch.h>
 
 #include <memory>
 #include <utility>

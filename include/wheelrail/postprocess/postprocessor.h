@@ -17,11 +17,11 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <wheelrail/checkpoint.h>
-#include <wheelrail/contact.h>
-#include <wheelrail/explicit_solver.h>
-#include <wheelrail/parameters.h>
-#include <wheelrail/wheelset.h>
+#include <wheelrail/base/checkpoint.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/parameters/parameters.h>
+#include <wheelrail/solver/explicit_solver.h>
+#include <wheelrail/solver/wheelset.h>
 
 #include <string>
 

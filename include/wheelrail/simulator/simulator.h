@@ -18,9 +18,8 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <wheelrail/contact.h>
-#include <wheelrail/explicit_solver.h>
-#include <wheelrail/parameters.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/parameters/parameters.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/postprocess/energy_balance.h>
 #include <wheelrail/postprocess/output_files.h>
@@ -29,8 +28,9 @@
 #include <wheelrail/postprocess/statistics.h>
 #include <wheelrail/postprocess/vtu_output.h>
 #include <wheelrail/simulator/divergence_check.h>
+#include <wheelrail/solver/explicit_solver.h>
+#include <wheelrail/solver/wheelset.h>
 #include <wheelrail/verification/samples.h>
-#include <wheelrail/wheelset.h>
 
 #include <chrono>
 #include <memory>

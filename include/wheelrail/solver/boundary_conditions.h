@@ -9,7 +9,7 @@
 
 #include <deal.II/grid/tria.h>
 
-#include <wheelrail/parameters.h>
+#include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/elastic_operator.h>
 
 #include <tuple>

@@ -26,7 +26,7 @@
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <wheelrail/parameters.h>
+#include <wheelrail/parameters/parameters.h>
 
 #include <array>
 #include <functional>

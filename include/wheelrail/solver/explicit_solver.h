@@ -9,9 +9,9 @@
 
 #include <deal.II/base/function.h>
 
-#include <wheelrail/checkpoint.h>
-#include <wheelrail/contact.h>
-#include <wheelrail/parameters.h>
+#include <wheelrail/base/checkpoint.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/boundary_conditions.h>
 #include <wheelrail/solver/elastic_operator.h>
 #include <wheelrail/solver/wheelset.h>

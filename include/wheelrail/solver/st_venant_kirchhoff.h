@@ -14,7 +14,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
-#include <wheelrail/parameters.h>
+#include <wheelrail/parameters/parameters.h>
 
 namespace WheelRail
 {

@@ -13,8 +13,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <wheelrail/contact.h>
-#include <wheelrail/parameters.h>
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/explicit_solver.h>
 
 #include <Epetra_MultiVector.h>

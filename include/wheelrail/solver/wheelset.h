@@ -9,8 +9,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
-#include <wheelrail/checkpoint.h>
-#include <wheelrail/parameters.h>
+#include <wheelrail/base/checkpoint.h>
+#include <wheelrail/parameters/parameters.h>
 
 namespace WheelRail
 {

@@ -1,4 +1,4 @@
-#include <wheelrail/checkpoint.h>
+#include <wheelrail/base/checkpoint.h>
 
 #include <algorithm>
 #include <fstream>

@@ -1,2 +1,0 @@
-// Forwarding header until the includes name <wheelrail/parameters/parameters.h>.
-#include <wheelrail/parameters/parameters.h>
