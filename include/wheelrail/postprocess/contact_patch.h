@@ -38,7 +38,7 @@ namespace WheelRail
    * nodes of the solution zone as patch_NAME.csv and patch_NAME.vtu.
    * Active with a wheelset and contact.
    */
-  class ContactPatch : public Postprocessor
+  class ContactPatch : public SerializedPostprocessor<ContactPatch>
   {
   public:
     explicit ContactPatch(const SimulatorAccess &access);
@@ -51,16 +51,6 @@ namespace WheelRail
     void
     print_summary() const;
 
-    void
-    save(Checkpoint::Writer &out) override
-    {
-      serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in) override
-    {
-      serialize(in);
-    }
     template <class Archive>
     void
     serialize(Archive &ar)

@@ -14,22 +14,12 @@ namespace WheelRail
 {
   /** At each statistics step: balance = total - initial total, relative to
    *  the largest energy scale of the step. */
-  class EnergyBalance : public Postprocessor
+  class EnergyBalance : public SerializedPostprocessor<EnergyBalance>
   {
   public:
     void
     execute(const StepInfo &step) override;
 
-    void
-    save(Checkpoint::Writer &out) override
-    {
-      serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in) override
-    {
-      serialize(in);
-    }
     template <class Archive>
     void
     serialize(Archive &ar)

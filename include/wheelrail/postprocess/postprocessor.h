@@ -92,6 +92,28 @@ namespace WheelRail
     virtual void
     load(Checkpoint::Reader &in) = 0;
   };
+
+
+
+  /**
+   * A postprocessor whose checkpoint is its `template <class Archive> void
+   * serialize(Archive &ar)`: save() and load() both call it.
+   */
+  template <class Derived>
+  class SerializedPostprocessor : public Postprocessor
+  {
+  public:
+    void
+    save(Checkpoint::Writer &out) override
+    {
+      static_cast<Derived &>(*this).serialize(out);
+    }
+    void
+    load(Checkpoint::Reader &in) override
+    {
+      static_cast<Derived &>(*this).serialize(in);
+    }
+  };
 } // namespace WheelRail
 
 #endif

@@ -26,7 +26,7 @@ namespace WheelRail
     std::vector<double> history;      ///< t, u_x,u_y,u_z, v_x,v_y,v_z per step
   };
 
-  class Probes : public Postprocessor
+  class Probes : public SerializedPostprocessor<Probes>
   {
   public:
     /** Find the probe nodes; a probe point outside the mesh stops the
@@ -44,16 +44,6 @@ namespace WheelRail
     void
     write_files() const override;
 
-    void
-    save(Checkpoint::Writer &out) override
-    {
-      serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in) override
-    {
-      serialize(in);
-    }
     template <class Archive>
     void
     serialize(Archive &ar)

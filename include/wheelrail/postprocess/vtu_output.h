@@ -15,7 +15,7 @@
 
 namespace WheelRail
 {
-  class VtuOutput : public Postprocessor
+  class VtuOutput : public SerializedPostprocessor<VtuOutput>
   {
   public:
     explicit VtuOutput(const SimulatorAccess &access);
@@ -29,16 +29,6 @@ namespace WheelRail
     void
     execute(const StepInfo &step) override;
 
-    void
-    save(Checkpoint::Writer &out) override
-    {
-      serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in) override
-    {
-      serialize(in);
-    }
     template <class Archive>
     void
     serialize(Archive &ar)

@@ -21,7 +21,7 @@ namespace WheelRail
    * Executes after the recording postprocessors and before the energy
    * balance takes this step's energies.
    */
-  class DivergenceCheck : public Postprocessor
+  class DivergenceCheck : public SerializedPostprocessor<DivergenceCheck>
   {
   public:
     DivergenceCheck(const SimulatorAccess       &access,
@@ -36,16 +36,6 @@ namespace WheelRail
     void
     execute(const StepInfo &step) override;
 
-    void
-    save(Checkpoint::Writer &out) override
-    {
-      serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in) override
-    {
-      serialize(in);
-    }
     template <class Archive>
     void
     serialize(Archive &ar)

@@ -29,7 +29,7 @@ namespace WheelRail
   };
 
   /** Records the samples of a run with contact. */
-  class SampleRecorder : public Postprocessor
+  class SampleRecorder : public SerializedPostprocessor<SampleRecorder>
   {
   public:
     explicit SampleRecorder(const SimulatorAccess &access);
@@ -39,16 +39,6 @@ namespace WheelRail
     void
     execute(const StepInfo &step) override;
 
-    void
-    save(Checkpoint::Writer &out) override
-    {
-      serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in) override
-    {
-      serialize(in);
-    }
     template <class Archive>
     void
     serialize(Archive &ar)
