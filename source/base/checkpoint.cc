@@ -12,13 +12,8 @@ namespace WheelRail
     write_header(Writer &out, const Header &header)
     {
       out.pod(magic);
-      out.pod(header.ranks);
-      out.pod(header.cells);
-      out.pod(header.dofs);
-      out.pod(header.step);
-      out.pod(header.time);
-      out.pod(header.time_step);
-      out.string(header.parameters);
+      Header fields = header;
+      fields.serialize(out);
     }
 
 
@@ -31,13 +26,7 @@ namespace WheelRail
       AssertThrow(first == magic,
                   dealii::ExcMessage("'" + name + "' is not a wheelrail checkpoint."));
       Header header;
-      in.pod(header.ranks);
-      in.pod(header.cells);
-      in.pod(header.dofs);
-      in.pod(header.step);
-      in.pod(header.time);
-      in.pod(header.time_step);
-      in.string(header.parameters);
+      header.serialize(in);
       return header;
     }
 

@@ -422,17 +422,8 @@ namespace WheelRail
 
 
 
-  void
-  PenaltyContact::save(Checkpoint::Writer &out) const
-  {
-    const_cast<PenaltyContact *>(this)->serialize(out);
-  }
-
-
-
-  void
-  PenaltyContact::load(Checkpoint::Reader &in)
-  {
-    serialize(in);
-  }
+  template void
+  PenaltyContact::serialize(Checkpoint::Writer &);
+  template void
+  PenaltyContact::serialize(Checkpoint::Reader &);
 } // namespace WheelRail

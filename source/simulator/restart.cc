@@ -36,40 +36,26 @@ namespace WheelRail
   void
   Simulator::serialize(Archive &ar)
   {
+    const double time_step = solver->time_step();
+    solver->serialize(ar);
     if constexpr (Archive::is_loading)
-      {
-        const double time_step = solver->time_step();
-        solver->load(ar);
-        AssertThrow(solver->time_step() == time_step,
-                    ExcMessage("The checkpoint '" + ar.file_name() +
-                               "' was written with the time step " + fmt(solver->time_step(), 10) +
-                               " s; this run's is " + fmt(time_step, 10) +
-                               " s (another executable?)."));
-      }
-    else
-      solver->save(ar);
-    bool has = contact != nullptr;
-    ar.pod(has);
-    AssertThrow(has == (contact != nullptr),
-                ExcMessage("The checkpoint's contact setting differs."));
-    if constexpr (Archive::is_loading)
-      {
-        if (contact)
-          contact->load(ar);
-      }
-    else if (contact)
-      contact->save(ar);
-    has = wheelset != nullptr;
-    ar.pod(has);
-    AssertThrow(has == (wheelset != nullptr),
-                ExcMessage("The checkpoint's wheelset setting differs."));
-    if constexpr (Archive::is_loading)
-      {
-        if (wheelset)
-          wheelset->load(ar);
-      }
-    else if (wheelset)
-      wheelset->save(ar);
+      AssertThrow(solver->time_step() == time_step,
+                  ExcMessage("The checkpoint '" + ar.file_name() +
+                             "' was written with the time step " + fmt(solver->time_step(), 10) +
+                             " s; this run's is " + fmt(time_step, 10) +
+                             " s (another executable?)."));
+    // an object a run may lack: a flag, then its state; the flag must be
+    // this run's
+    const auto optional = [&ar](auto *object, const std::string &what) {
+      bool has = object != nullptr;
+      ar.pod(has);
+      AssertThrow(has == (object != nullptr),
+                  ExcMessage("The checkpoint's " + what + " setting differs."));
+      if (object)
+        object->serialize(ar);
+    };
+    optional(contact.get(), "contact");
+    optional(wheelset.get(), "wheelset");
     for (Postprocessor *postprocessor : checkpointed)
       if constexpr (Archive::is_loading)
         postprocessor->load(ar);

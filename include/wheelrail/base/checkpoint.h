@@ -211,6 +211,20 @@ namespace WheelRail
       double                           time_step = 0;
       /** Every parameter as ParameterHandler::ShortPRM prints it. */
       std::string parameters;
+
+      /** The fields after the magic number, for Writer and Reader. */
+      template <class Archive>
+      void
+      serialize(Archive &ar)
+      {
+        ar.pod(ranks);
+        ar.pod(cells);
+        ar.pod(dofs);
+        ar.pod(step);
+        ar.pod(time);
+        ar.pod(time_step);
+        ar.string(parameters);
+      }
     };
 
     /** Write the magic number and @p header. */

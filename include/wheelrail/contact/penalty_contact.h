@@ -128,16 +128,11 @@ namespace WheelRail
   class PenaltyContact
   {
   public:
-    /** Write the contact and friction state (replicated on every rank)
-     *  and the search state, so that a restart continues exactly. */
-    void
-    save(Checkpoint::Writer &out) const;
-    /** Read what save() wrote, for the same mesh and rank count. */
-    void
-    load(Checkpoint::Reader &in);
-    /** The checkpointed state, listed once for both directions (@p ar a
-     *  Checkpoint::Writer or Reader); after reading, the search structures
-     *  that follow from it are rebuilt. */
+    /** The contact and friction state (replicated on every rank) and the
+     *  search state, so that a restart continues exactly; listed once for
+     *  both directions (@p ar a Checkpoint::Writer or Reader, the same
+     *  mesh and rank count). After reading, the search structures that
+     *  follow from it are rebuilt. */
     template <class Archive>
     void
     serialize(Archive &ar);

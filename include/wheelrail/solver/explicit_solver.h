@@ -151,18 +151,6 @@ namespace WheelRail
     template <class Archive>
     void
     serialize(Archive &ar);
-    /** Write the state of the time integration (this rank's part). */
-    void
-    save(Checkpoint::Writer &out) const
-    {
-      const_cast<ExplicitSolver *>(this)->serialize(out);
-    }
-    /** Read what save() wrote, on the same mesh and partition. */
-    void
-    load(Checkpoint::Reader &in)
-    {
-      serialize(in);
-    }
 
     /** Times of the steps since the last reset_times(). */
     const StepTimes &

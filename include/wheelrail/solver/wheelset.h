@@ -68,17 +68,6 @@ namespace WheelRail
       for (double *x : {&theta, &omega, &d_axle_static, &d_c, &v_c, &work, &damper_loss, &radius})
         ar.pod(*x);
     }
-    /** Write and read the axle and suspension state (checkpoints). */
-    void
-    save(Checkpoint::Writer &out) const
-    {
-      const_cast<Wheelset *>(this)->serialize(out);
-    }
-    void
-    load(Checkpoint::Reader &in)
-    {
-      serialize(in);
-    }
 
     /** Torque about +y at time t [N m] (positive drives towards +x). */
     double
