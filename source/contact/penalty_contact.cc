@@ -234,58 +234,6 @@ namespace WheelRail
 
 
 
-  std::vector<MasterNodeState>
-  PenaltyContact::master_states() const
-  {
-    const Pass                  &pass = passes.front();
-    std::vector<MasterNodeState> states(node_dof.size());
-    std::vector<double>          weight(node_dof.size(), 0.);
-    std::vector<bool>            is_master(node_dof.size(), false);
-    for (const auto &face : pass.faces)
-      for (unsigned int v = 0; v < 4; ++v)
-        is_master[face.node[v]] = true;
-    for (const unsigned int s : pass.candidate_slaves)
-      {
-        const ContactNodeState &state = pass.slaves[s];
-        if (!state.in_contact)
-          continue;
-        const MasterFace &face = pass.faces[state.face];
-        const double      N[4] = {0.25 * (1 - state.xi) * (1 - state.eta),
-                                  0.25 * (1 + state.xi) * (1 - state.eta),
-                                  0.25 * (1 - state.xi) * (1 + state.eta),
-                                  0.25 * (1 + state.xi) * (1 + state.eta)};
-        for (unsigned int v = 0; v < 4; ++v)
-          {
-            MasterNodeState &m = states[face.node[v]];
-            m.normal_force += N[v] * state.normal_force;
-            m.tangential_force += N[v] * state.tangential_force;
-            m.slip_velocity += N[v] * state.slip_velocity;
-            m.cof += N[v] * state.cof;
-            weight[face.node[v]] += N[v];
-          }
-      }
-    std::vector<MasterNodeState> result;
-    for (unsigned int n = 0; n < node_dof.size(); ++n)
-      if (is_master[n])
-        {
-          MasterNodeState m = states[n];
-          m.X               = node_X[n];
-          m.area            = node_area[n];
-          if (weight[n] > 0)
-            {
-              m.slip_velocity /= weight[n];
-              m.cof /= weight[n];
-            }
-          result.push_back(m);
-        }
-    std::sort(result.begin(), result.end(), [](const auto &a, const auto &b) {
-      return lexicographic_less(a.X, b.X);
-    });
-    return result;
-  }
-
-
-
   void
   PenaltyContact::add_forces(const LinearAlgebra::distributed::Vector<double> &u,
                              const double                                      dt,

@@ -11,31 +11,16 @@ namespace WheelRail
 
 
 
-  double
-  patch_centre(const PenaltyContact &contact)
-  {
-    double fn = 0, fx = 0;
-    for (const auto &s : contact.slave_states())
-      if (s.in_contact)
-        {
-          fn += s.normal_force;
-          fx += s.normal_force * s.x[0];
-        }
-    return fn > 0 ? fx / fn : std::numeric_limits<double>::quiet_NaN();
-  }
-
-
-
   TrailingSlip
   trailing_micro_slip(const PenaltyContact &contact)
   {
     TrailingSlip result;
-    const double centre = patch_centre(contact);
+    const double centre = contact.patch_centre();
     if (std::isnan(centre))
       return result;
     unsigned int n = 0;
-    for (const auto &s : contact.slave_states())
-      if (s.in_contact && s.x[0] < centre)
+    for (const NodalContact &s : contact.slave_node_results())
+      if (s.in_contact() && s.x[0] < centre)
         {
           result.magnitude += s.slip_velocity;
           result.rate += s.slip_rate;
@@ -55,31 +40,37 @@ namespace WheelRail
   write_contact_nodes(const SimulatorAccess &access, const std::string &name)
   {
     // replicated on every rank: rank 0 writes
-    const auto &states = access.contact->slave_states();
-    double      max_ft = 0;
-    for (const auto &s : states)
-      max_ft = std::max(max_ft, s.tangential_force.norm());
-    const double       eps_t = 0.003 * max_ft; // SPEC 6, eq. 5
-    const double       eps_s = 0.05;           // m/s, eq. 6
-    std::ostringstream out;
+    const PenaltyContact &contact = *access.contact;
+    const auto           &states  = contact.slave_states();
+    const auto            nodes   = contact.slave_node_results();
+    const double          eps_t   = contact.adhesion_tolerance(0);
+    const double          eps_s   = NodalContact::slip_velocity_threshold;
+    std::ostringstream    out;
     out << std::setprecision(9) << "# slave-node contact state at t = " << access.solver.time()
-        << " s; SI units; x, y, z current position; adhesion by eq. 5 (f|F_n| - |F_t| > " << eps_t
-        << " N), slip by eq. 6 (s_n > " << eps_s << " m/s)\n"
+        << " s; SI units; x, y, z current position; "
+        << (access.parameters.contact.two_pass ?
+              "two-pass contact: F_n, F_t are this node's own penalty force plus the reactions "
+              "N_j F of the other pass's slaves on its faces, the state columns weighted the "
+              "same way; " :
+              "")
+        << "adhesion by eq. 5 (f|F_n| - |F_t| > " << eps_t << " N), slip by eq. 6 (s_n > " << eps_s
+        << " m/s)\n"
         << "X,Y,Z,x,y,z,in_contact,gap,F_n,F_t_x,F_t_y,F_t_z,area,pressure,shear_x,shear,"
            "slip_velocity,cof,adhesion_eq5,slip_eq6\n";
-    for (const auto &s : states)
-      if (s.in_contact || s.gap < access.parameters.contact.search_margin)
-        {
-          const double shear = s.area > 0 ? s.tangential_force.norm() / s.area : 0.;
-          out << s.X[0] << ',' << s.X[1] << ',' << s.X[2] << ',' << s.x[0] << ',' << s.x[1] << ','
-              << s.x[2] << ',' << s.in_contact << ',' << s.gap << ',' << s.normal_force << ','
-              << s.tangential_force[0] << ',' << s.tangential_force[1] << ','
-              << s.tangential_force[2] << ',' << s.area << ',' << s.pressure() << ','
-              << (s.area > 0 ? s.tangential_force[0] / s.area : 0.) << ',' << shear << ','
-              << s.slip_velocity << ',' << s.cof << ','
-              << (s.in_contact && s.cof * s.normal_force - s.tangential_force.norm() > eps_t) << ','
-              << (s.in_contact && s.slip_velocity > eps_s) << '\n';
-        }
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const NodalContact &s = nodes[i];
+        if (!s.in_contact() && !(states[i].gap < access.parameters.contact.search_margin))
+          continue;
+        const double shear = s.area > 0 ? s.tangential_force.norm() / s.area : 0.;
+        out << s.X[0] << ',' << s.X[1] << ',' << s.X[2] << ',' << s.x[0] << ',' << s.x[1] << ','
+            << s.x[2] << ',' << s.in_contact() << ',' << states[i].gap << ',' << s.normal_force
+            << ',' << s.tangential_force[0] << ',' << s.tangential_force[1] << ','
+            << s.tangential_force[2] << ',' << s.area << ',' << s.pressure() << ','
+            << (s.area > 0 ? s.tangential_force[0] / s.area : 0.) << ',' << shear << ','
+            << s.slip_velocity << ',' << s.cof << ',' << s.adhesion() << ',' << s.slip_eq6()
+            << '\n';
+      }
     access.write_file(name, out.str());
   }
 
@@ -96,7 +87,7 @@ namespace WheelRail
   {
     if (!access.wheelset || !access.contact)
       return;
-    const double centre = patch_centre(*access.contact);
+    const double centre = access.contact->patch_centre();
     if (std::isnan(centre) || next_snapshot >= 3)
       return;
     const double dts = 5.7e-6; // s, the paper's 175 kHz sampling
@@ -118,35 +109,38 @@ namespace WheelRail
   void
   ContactPatch::write_snapshot(const std::string &name, const double centre) const
   {
-    const GeometryParameters &g      = access.parameters.geometry;
-    const auto                states = access.contact->master_states();
-    double                    max_ft = 0;
-    for (const auto &m : states)
-      max_ft = std::max(max_ft, m.tangential_force.norm());
-    const double       eps_t = 0.003 * max_ft, eps_s = 0.05;
-    std::ostringstream csv, vtu_points, vtu_data[6];
+    const GeometryParameters &g       = access.parameters.geometry;
+    const PenaltyContact     &contact = *access.contact;
+    const auto                states  = contact.master_node_results();
+    std::ostringstream        csv, vtu_points, vtu_data[6];
     csv << std::setprecision(9) << "# contact patch at " << name << " (t = " << access.solver.time()
         << " s, patch centre x = " << centre << " m): rail-top nodes of the solution zone; SI "
-        << "units; adhesion eq. 5 (f|F_n| - |F_t| > " << eps_t << " N), slip eq. 6 (s_n > " << eps_s
-        << " m/s)\n"
+        << "units; F_n, shear: the forces of "
+        << (contact.n_passes() > 1 ? "both passes (the node's own as a slave of the second pass "
+                                     "plus the shares N_j F of the wheel nodes on its faces)" :
+                                     "the wheel nodes on its faces, shared with N_j")
+        << ", on the wheel; adhesion and slip decided on those slave nodes (eq. 5: "
+        << "f|F_n| - |F_t| > " << contact.adhesion_tolerance(0)
+        << " N with the node's own f; eq. 6: s_n > " << NodalContact::slip_velocity_threshold
+        << " m/s) and mapped with the same weights: adhesion_share, slip_share; the flags: share > "
+           "0.5\n"
         << "x,y,in_contact,pressure,shear_x,shear,slip_velocity,cof,adhesion_eq5,slip_eq6,"
-           "F_n,area\n";
+           "F_n,area,adhesion_share,slip_share\n";
     unsigned int n_points = 0, n_contact = 0, n_slip = 0;
     double       p_max = 0, s_max = 0, x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
-    for (const auto &m : states)
+    for (const NodalContact &m : states)
       {
         if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
             std::abs(m.X[1]) > g.zone_half_width + 1e-9 || m.area <= 0)
           continue;
-        const bool   in     = m.normal_force > 0;
-        const double p      = m.normal_force / m.area;
+        const bool   in     = m.in_contact();
+        const double p      = m.pressure();
         const double shear  = m.tangential_force.norm() / m.area;
-        const bool   adhere = in && m.cof * m.normal_force - m.tangential_force.norm() > eps_t;
-        const bool   slip   = in && m.slip_velocity > eps_s;
+        const bool   adhere = m.adhesion();
         csv << m.X[0] << ',' << m.X[1] << ',' << in << ',' << p << ','
             << m.tangential_force[0] / m.area << ',' << shear << ',' << m.slip_velocity << ','
-            << m.cof << ',' << adhere << ',' << slip << ',' << m.normal_force << ',' << m.area
-            << '\n';
+            << m.cof << ',' << adhere << ',' << m.slip_eq6() << ',' << m.normal_force << ','
+            << m.area << ',' << m.adhesion_share << ',' << m.slip_share << '\n';
         vtu_points << m.X[0] << ' ' << m.X[1] << ' ' << m.X[2] << '\n';
         const double values[6] = {p,
                                   m.tangential_force[0] / m.area,
@@ -220,8 +214,8 @@ namespace WheelRail
       return;
     const ContactSummary &cs    = access.contact->summary();
     double                p_max = 0, s_max = 0, x0 = 1e30, x1 = -1e30, y0 = 1e30, y1 = -1e30;
-    for (const auto &s : access.contact->slave_states())
-      if (s.in_contact)
+    for (const NodalContact &s : access.contact->slave_node_results())
+      if (s.in_contact())
         {
           p_max = std::max(p_max, s.pressure());
           s_max = std::max(s_max, s.area > 0 ? s.tangential_force.norm() / s.area : 0.);

@@ -45,6 +45,7 @@ namespace WheelRail
         add("wheel x [m]", access.wheelset->axle_position()[0]);
         add("axle z [m]", access.wheelset->axle_position()[2]);
         add("omega [rad/s]", access.wheelset->angular_velocity());
+        add("creepage [-]", access.wheelset->creepage());
       }
     else if (access.parameters.problem.geometry == "wheel and rail")
       {

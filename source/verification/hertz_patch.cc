@@ -23,30 +23,39 @@ namespace WheelRail
       // contact patch: least-squares fit p^2 = p0^2 (1 - (x-xc)^2/a^2 - y^2/b^2)
       // over the nodes with p > 25 % of the largest (the edge nodes' tributary
       // areas reach beyond the patch)
-      const auto  &states = access.contact->slave_states();
+      // the wheel nodes with the forces of every pass; the penetrations are
+      // those of the first pass
+      const auto  &gaps   = access.contact->slave_states();
+      const auto   states = access.contact->slave_node_results();
       double       p_max = 0, force = 0, xc = 0, max_pen = 0;
       unsigned int n_contact = 0;
-      for (const auto &s : states)
-        if (s.in_contact)
+      for (unsigned int i = 0; i < states.size(); ++i)
+        if (states[i].in_contact())
           {
-            p_max = std::max(p_max, s.pressure());
+            const NodalContact &s = states[i];
+            p_max                 = std::max(p_max, s.pressure());
             force += s.normal_force;
             xc += s.normal_force * s.X[0];
-            max_pen = std::max(max_pen, -s.gap);
+            if (gaps[i].in_contact)
+              max_pen = std::max(max_pen, -gaps[i].gap);
             ++n_contact;
           }
       AssertThrow(n_contact > 0, ExcMessage("The static contact solve found no contact."));
+      double rail_force = 0;
+      for (const NodalContact &m : access.contact->master_node_results())
+        rail_force += m.normal_force;
       xc /= force;
       FullMatrix<double> M(3, 3);
       Vector<double>     rhs(3), c(3);
       double             x_extent = 0, y_extent = 0, pen_at_peak = 0;
-      for (const auto &s : states)
-        if (s.in_contact)
+      for (unsigned int i = 0; i < states.size(); ++i)
+        if (states[i].in_contact())
           {
-            x_extent = std::max(x_extent, std::abs(s.X[0] - xc));
-            y_extent = std::max(y_extent, std::abs(s.X[1]));
+            const NodalContact &s = states[i];
+            x_extent              = std::max(x_extent, std::abs(s.X[0] - xc));
+            y_extent              = std::max(y_extent, std::abs(s.X[1]));
             if (s.pressure() == p_max)
-              pen_at_peak = -s.gap;
+              pen_at_peak = -gaps[i].gap;
             if (s.pressure() < 0.25 * p_max)
               continue;
             const double phi[3] = {1., (s.X[0] - xc) * (s.X[0] - xc), s.X[1] * s.X[1]};
@@ -87,6 +96,8 @@ namespace WheelRail
                    << "  nodes in contact " << n_contact << ", total normal force "
                    << fmt(force * 1e-3, 5) << " kN, largest nodal pressure " << fmt(p_max * 1e-6, 4)
                    << " MPa" << std::endl
+                   << "  the same force on the rail-top nodes: " << fmt(rail_force * 1e-3, 5)
+                   << " kN" << std::endl
                    << "  penetration at peak pressure " << fmt(pen_at_peak * 1e6, 3)
                    << " um, largest penetration " << fmt(max_pen * 1e6, 3) << " um, Hertz approach "
                    << fmt(h.approach * 1e6, 4) << " um" << std::endl

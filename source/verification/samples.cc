@@ -47,8 +47,8 @@ namespace WheelRail
     for (const auto &p : access.contact->active_pairs())
       s.tangential_stiffness += access.parameters.contact.tangential_factor * p.stiffness;
     double fn = 0, ffn = 0;
-    for (const auto &n : access.contact->slave_states())
-      if (n.in_contact)
+    for (const NodalContact &n : access.contact->slave_node_results())
+      if (n.in_contact())
         {
           fn += n.normal_force;
           ffn += n.cof * n.normal_force;

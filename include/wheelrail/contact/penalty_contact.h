@@ -74,15 +74,59 @@ namespace WheelRail
     }
   };
 
-  /** Contact results carried over to a master (rail-top) node. */
-  struct MasterNodeState
+  /**
+   * The contact at one node with the forces of every pass (output and
+   * post-processing; contact/nodal_results.cc). Each pass applies its
+   * penalty forces in full: a node's force is its own force as a slave plus
+   * the shares N_j F of the slaves of the other pass on its faces, as the
+   * force on the first pass's slave body (the wheel). The adhesion/slip state
+   * is decided on the slave nodes, where the return map makes it exact (eq. 5
+   * with each node's own f, eq. 6 with its own s_n), and carried to the node
+   * with the same weights (1 for its own state, N_j for the other pass's).
+   */
+  struct NodalContact
   {
     Point<dim>     X;                 ///< reference position [m]
-    double         area         = 0;  ///< tributary area on the master surface [m^2]
-    double         normal_force = 0;  ///< sum of N_j |F_n| of the slaves on its faces [N]
-    Tensor<1, dim> tangential_force;  ///< the same for F_t (on the slave side) [N]
-    double         slip_velocity = 0; ///< N_j-weighted mean of the slaves' s_n [m/s]
-    double         cof           = 0; ///< N_j-weighted mean local COF
+    Point<dim>     x;                 ///< current position (slave nodes; X on masters) [m]
+    double         area         = 0;  ///< tributary area [m^2]
+    double         normal_force = 0;  ///< |F_n| of all passes [N]
+    Tensor<1, dim> tangential_force;  ///< F_t of all passes, on the first pass's slave body [N]
+    double         slip_velocity = 0; ///< weighted mean of the slaves' s_n [m/s]
+    Tensor<1, dim> slip_rate;         ///< weighted mean de/dt of the first pass's slave [m/s]
+    double         cof    = 0;        ///< weighted mean local COF
+    double         weight = 0;        ///< sum of the weights of the slave states in contact
+    /** Shares of that weight in adhesion by eq. 5 (f |F_n| - |F_t| > eps_T on
+     *  the slave) and in slip by eq. 6 (s_n > eps_s) [-]. */
+    double adhesion_share = 0;
+    double slip_share     = 0;
+
+    /** eps_T of eq. 5 as a fraction of the largest |F_t| of the pass [-]. */
+    static constexpr double adhesion_tolerance_fraction = 0.003;
+    /** eps_s of eq. 6 [m/s]. */
+    static constexpr double slip_velocity_threshold = 0.05;
+
+    bool
+    in_contact() const
+    {
+      return normal_force > 0;
+    }
+    double
+    pressure() const
+    {
+      return area > 0 ? normal_force / area : 0.;
+    }
+    /** In contact, and most of its slave states adhere (eq. 5). */
+    bool
+    adhesion() const
+    {
+      return in_contact() && adhesion_share > 0.5;
+    }
+    /** In contact, and most of its slave states slip by eq. 6. */
+    bool
+    slip_eq6() const
+    {
+      return in_contact() && slip_share > 0.5;
+    }
   };
 
   /** An active slave/master pair for the implicit tangent. */
@@ -172,13 +216,35 @@ namespace WheelRail
       return passes.front().slaves;
     }
     /**
-     * The contact state carried over to the master nodes of the first pass
-     * (the rail top): forces distributed with the shape functions as the
-     * penalty forces are, slip velocity and COF averaged with them.
+     * The slave nodes of the first pass (the wheel tread), in the order of
+     * slave_states(), with the forces and states of every pass.
      */
-    std::vector<MasterNodeState>
-    master_states() const;
+    std::vector<NodalContact>
+    slave_node_results() const;
+    /**
+     * The master nodes of the first pass (the rail top), sorted by
+     * position, with the forces of every pass and the slave states mapped
+     * onto them: the first pass's slaves with the shape functions N_j of
+     * their contact points, as the penalty forces are distributed; in
+     * two-pass contact the node's own state as a slave of the second pass.
+     */
+    std::vector<NodalContact>
+    master_node_results() const;
+    /** The tolerance eps_T of eq. 5 for the slaves of pass @p p: 0.3 % of
+     *  their largest |F_t| [N]. */
+    double
+    adhesion_tolerance(const unsigned int p) const;
+    /** Force-weighted mean x of the contact points of every pass [m] (NaN
+     *  without contact). */
+    double
+    patch_centre() const;
 
+    /** 1, or 2 with two-pass contact. */
+    unsigned int
+    n_passes() const
+    {
+      return passes.size();
+    }
     /** Totals of the last add_forces(). */
     const ContactSummary &
     summary() const

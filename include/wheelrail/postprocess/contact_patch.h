@@ -14,10 +14,6 @@
 
 namespace WheelRail
 {
-  /** Force-weighted mean x of the contact nodes (NaN without contact). */
-  double
-  patch_centre(const PenaltyContact &contact);
-
   /** Means over the contact nodes behind the patch centre. */
   struct TrailingSlip
   {

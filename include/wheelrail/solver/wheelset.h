@@ -109,6 +109,20 @@ namespace WheelRail
     {
       return theta;
     }
+    /** Rolling radius r_eff of the static state (axle height above the
+     *  contact points) [m]. */
+    double
+    rolling_radius() const
+    {
+      return radius;
+    }
+    /** Rigid longitudinal creepage (v_x - omega r_eff) / v_x [-] (0 before
+     *  rolling starts). */
+    double
+    creepage() const
+    {
+      return velocity[0] != 0 ? (velocity[0] - omega * radius) / velocity[0] : 0.;
+    }
     /** Static wheel load (M_c + unsprung mass) g [N]. */
     double
     static_load() const;
