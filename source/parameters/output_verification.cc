@@ -49,6 +49,14 @@ namespace WheelRail
                       "zlib level of the VTU snapshots: 'fast' (about 3 s "
                       "less per snapshot of the paper mesh than 'best', "
                       "files about 30 % larger), 'best', or 'none'.");
+    prm.declare_entry("Patch averaging window",
+                      "0",
+                      Patterns::Double(0, 1e-3),
+                      "Length [s] of the time window, centred on each contact-patch "
+                      "snapshot instant, over which the patch fields are averaged "
+                      "into patch_NAME_mean.csv (pressure, shear, s_n, adhesion and "
+                      "slip fractions), range [0, 1e-3]; 0 = no means. The paper's "
+                      "sampling interval is 5.7e-6 s.");
     prm.declare_entry("Probe point",
                       "0, 0, 0",
                       vector_pattern(),
@@ -118,6 +126,7 @@ namespace WheelRail
     statistics_interval = prm.get_integer("Statistics interval");
     vtu_interval        = prm.get_integer("VTU interval");
     vtu_compression     = prm.get("VTU compression");
+    patch_window        = prm.get_double("Patch averaging window");
     probe_point         = Point<3>(get_vector(prm, "Probe point"));
     probe_component     = prm.get_integer("Probe component");
     timing_warmup_steps = prm.get_integer("Timing warm-up steps");

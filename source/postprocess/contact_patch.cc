@@ -1,5 +1,6 @@
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/simulator/format.h>
+#include <wheelrail/verification/hertz_patch.h>
 
 #include <cmath>
 #include <iomanip>
@@ -82,26 +83,128 @@ namespace WheelRail
 
 
 
+  namespace
+  {
+    const double      sampling_interval = 5.7e-6; // s, the paper's 175 kHz sampling
+    const std::string snapshot_names[3] = {"t-5.7us", "t", "t+5.7us"};
+  } // namespace
+
+
+
   void
   ContactPatch::execute(const StepInfo &)
   {
     if (!access.wheelset || !access.contact)
       return;
     const double centre = access.contact->patch_centre();
-    if (std::isnan(centre) || next_snapshot >= 3)
+    if (std::isnan(centre))
       return;
-    const double dts = 5.7e-6; // s, the paper's 175 kHz sampling
-    const double target =
-      (static_cast<double>(next_snapshot) - 1.) * access.parameters.wheelset.rolling_speed * dts;
+    if (access.parameters.output.patch_window > 0)
+      average(centre);
+    if (next_snapshot >= 3)
+      return;
+    const double target = (static_cast<double>(next_snapshot) - 1.) *
+                          access.parameters.wheelset.rolling_speed * sampling_interval;
     if (!(previous_centre < target && centre >= target))
       {
         previous_centre = centre;
         return;
       }
     previous_centre        = centre;
-    const std::string name = next_snapshot == 0 ? "t-5.7us" : next_snapshot == 1 ? "t" : "t+5.7us";
+    const std::string name = snapshot_names[next_snapshot];
     ++next_snapshot;
     write_snapshot(name, centre);
+  }
+
+
+
+  void
+  ContactPatch::average(const double centre)
+  {
+    const double              V    = access.parameters.wheelset.rolling_speed;
+    const double              half = 0.5 * V * access.parameters.output.patch_window;
+    std::vector<NodalContact> nodes;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        Window      &w      = windows[k];
+        const double target = (static_cast<double>(k) - 1.) * V * sampling_interval;
+        if (w.done || centre < target - half)
+          continue;
+        if (centre >= target + half)
+          {
+            // the window is complete: the steps whose centre was inside it
+            if (w.steps > 0)
+              write_mean(k);
+            w.done = 1;
+            continue;
+          }
+        if (nodes.empty())
+          nodes = access.contact->master_node_results();
+        w.sums.resize(nodes.size() * n_window_fields, 0.);
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            const NodalContact &m = nodes[i];
+            if (!m.in_contact() || m.area <= 0)
+              continue;
+            double *sum = &w.sums[i * n_window_fields];
+            sum[0] += 1.;
+            sum[1] += m.pressure();
+            sum[2] += m.tangential_force[0] / m.area;
+            sum[3] += m.tangential_force.norm() / m.area;
+            sum[4] += m.slip_velocity;
+            sum[5] += m.adhesion();
+            sum[6] += m.slip_eq6();
+            sum[7] += m.normal_force;
+          }
+        ++w.steps;
+      }
+  }
+
+
+
+  void
+  ContactPatch::write_mean(const unsigned int k) const
+  {
+    const GeometryParameters &g     = access.parameters.geometry;
+    const Window             &w     = windows[k];
+    const auto                nodes = access.contact->master_node_results();
+    AssertThrow(nodes.size() * n_window_fields == w.sums.size(), ExcInternalError());
+    std::ostringstream csv;
+    csv << std::setprecision(9) << "# contact patch at " << snapshot_names[k]
+        << ", time means over " << w.steps << " steps (" << access.parameters.output.patch_window
+        << " s centred on the instant, by the patch centre's position): rail-top nodes of the "
+           "solution zone; SI units; a node out of contact counts as zero; contact, adhesion, "
+           "slip_eq6: the fractions of the steps in contact, in adhesion (eq. 5) and in slip "
+           "(eq. 6), decided as in patch_"
+        << snapshot_names[k] << ".csv\n"
+        << "x,y,contact,pressure,shear_x,shear,slip_velocity,adhesion,slip_eq6,F_n,area\n";
+    const double n        = static_cast<double>(w.steps);
+    unsigned int n_always = 0, n_sometimes = 0;
+    double       p_max = 0, slip_nodes = 0;
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      {
+        const NodalContact &m = nodes[i];
+        if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
+            std::abs(m.X[1]) > g.zone_half_width + 1e-9 || m.area <= 0)
+          continue;
+        const double *sum = &w.sums[i * n_window_fields];
+        n_always += sum[0] == n;
+        n_sometimes += sum[0] > 0;
+        p_max = std::max(p_max, sum[1] / n);
+        slip_nodes += (sum[0] - sum[5]) / n;
+        csv << m.X[0] << ',' << m.X[1];
+        for (unsigned int f = 0; f < n_window_fields; ++f)
+          csv << ',' << sum[f] / n;
+        csv << ',' << m.area << '\n';
+      }
+    access.write_file("patch_" + snapshot_names[k] + "_mean.csv", csv.str());
+    if (access.robust_output_only())
+      return;
+    access.pcout << "Contact patch at " << snapshot_names[k] << ", means over " << w.steps
+                 << " steps: " << n_always << " rail-top nodes in contact in every step, "
+                 << n_sometimes << " in some, peak mean pressure " << fmt(p_max * 1e-6, 5)
+                 << " MPa, on average " << fmt(slip_nodes, 4) << " nodes in slip (eq. 5)"
+                 << std::endl;
   }
 
 
@@ -128,6 +231,7 @@ namespace WheelRail
            "F_n,area,adhesion_share,slip_share\n";
     unsigned int n_points = 0, n_contact = 0, n_slip = 0;
     double       p_max = 0, s_max = 0, x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
+    std::vector<Verification::PatchNode> patch;
     for (const NodalContact &m : states)
       {
         if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
@@ -153,6 +257,7 @@ namespace WheelRail
         ++n_points;
         if (in)
           {
+            patch.push_back({m.X[0], m.X[1], p, m.normal_force});
             ++n_contact;
             n_slip += !adhere;
             p_max = std::max(p_max, p);
@@ -203,6 +308,16 @@ namespace WheelRail
                  << fmt(y_min * 1e3, 4) << " to " << fmt(y_max * 1e3, 4) << " mm, peak pressure "
                  << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
                  << " MPa, slip (eq. 5) " << n_slip << " of " << n_contact << " nodes" << std::endl;
+    if (name == "t" && !patch.empty())
+      {
+        const Verification::EllipseFit fit = Verification::fit_hertz_ellipse(patch);
+        access.pcout << "Contact patch at t against Hertz at the patch's normal force "
+                     << fmt(fit.force * 1e-3, 5) << " kN" << std::endl;
+        Verification::report_hertz_fit(access,
+                                       fit,
+                                       fit.force,
+                                       access.parameters.verification.tolerance);
+      }
   }
 
 

@@ -60,6 +60,12 @@ printf '1phcrlhw' | dd of=run/checkpoint/rank_0.bin conv=notrunc status=none
 snapshot > before.md5
 refused base.prm "the checkpoint file 'run/checkpoint/rank_0.bin' has an older format"
 cp saved/* run/checkpoint/
+
+# ... and of the format before the contact patch's window means
+printf '2phcrlhw' | dd of=run/checkpoint/rank_0.bin conv=notrunc status=none
+snapshot > before.md5
+refused base.prm "has an older format (no contact-patch window means)"
+cp saved/* run/checkpoint/
 snapshot > before.md5
 
 # physics edited: every differing entry named with both values

@@ -34,10 +34,13 @@ namespace WheelRail
 {
   namespace Checkpoint
   {
-    /** First 8 bytes of a rank file of the current format ("whlrchp2"). */
-    constexpr std::uint64_t magic = 0x77686c7263687032ull;
-    /** ... of the format before the checksum and parameter record. */
+    /** First 8 bytes of a rank file of the current format ("whlrchp3"). */
+    constexpr std::uint64_t magic = 0x77686c7263687033ull;
+    /** ... of the formats before: without the checksum and parameter
+     *  record ("whlrchp1"); without the contact patch's window means
+     *  ("whlrchp2"). */
     constexpr std::uint64_t magic_version_1 = 0x77686c7263687031ull;
+    constexpr std::uint64_t magic_version_2 = 0x77686c7263687032ull;
     /** Last 8 bytes of a complete rank file ("whlrend2"). */
     constexpr std::uint64_t end_marker = 0x77686c72656e6432ull;
     /** Bytes of the trailer: payload size, CRC-32 (as 8 bytes), end marker. */

@@ -262,6 +262,7 @@ namespace WheelRail
     unsigned int  statistics_interval;
     unsigned int  vtu_interval;
     std::string   vtu_compression; ///< "fast", "best" or "none"
+    double        patch_window;    ///< window of the patch means [s], 0 = none
     Point<3>      probe_point;
     unsigned int  probe_component;
     unsigned int  timing_warmup_steps;

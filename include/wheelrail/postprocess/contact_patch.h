@@ -9,8 +9,10 @@
 
 #include <wheelrail/postprocess/postprocessor.h>
 
+#include <cstdint>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace WheelRail
 {
@@ -31,7 +33,9 @@ namespace WheelRail
   /**
    * Contact-patch snapshots at the instants of SPEC 5.5: when the patch
    * centre passes x = -V dt_s, 0, +V dt_s (dt_s = 5.7 us), the rail-top
-   * nodes of the solution zone as patch_NAME.csv and patch_NAME.vtu.
+   * nodes of the solution zone as patch_NAME.csv and patch_NAME.vtu; with
+   * Output/Patch averaging window > 0, the time means over that window
+   * centred on each instant as patch_NAME_mean.csv.
    * Active with a wheelset and contact.
    */
   class ContactPatch : public SerializedPostprocessor<ContactPatch>
@@ -53,9 +57,33 @@ namespace WheelRail
     {
       ar.pod(previous_centre);
       ar.pod(next_snapshot);
+      for (Window &w : windows)
+        {
+          ar.pod(w.steps);
+          ar.pod(w.done);
+          ar.vector(w.sums);
+        }
     }
 
   private:
+    /** The sums of a snapshot's averaging window: per rail-top node of
+     *  PenaltyContact::master_node_results() (that order), the quantities
+     *  of window_fields(). */
+    struct Window
+    {
+      std::uint64_t       steps = 0;
+      std::uint8_t        done  = 0;
+      std::vector<double> sums;
+    };
+    static constexpr unsigned int n_window_fields = 8;
+    /** Add this step to the windows that contain the patch centre @p centre,
+     *  and write those that it has just left. */
+    void
+    average(const double centre);
+    /** Write patch_NAME_mean.csv of snapshot @p k. */
+    void
+    write_mean(const unsigned int k) const;
+
     /** Write the snapshot @p name (t-5.7us, t, t+5.7us) at @p centre. */
     void
     write_snapshot(const std::string &name, const double centre) const;
@@ -63,6 +91,7 @@ namespace WheelRail
     const SimulatorAccess &access;
     double                 previous_centre = -std::numeric_limits<double>::max();
     unsigned int           next_snapshot   = 0;
+    Window                 windows[3];
   };
 } // namespace WheelRail
 

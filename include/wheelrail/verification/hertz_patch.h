@@ -1,18 +1,49 @@
 /**
  * @file verification/hertz_patch.h
- * The static contact patch of the wheel on the rail against Hertz's
- * solution (SPEC 8): semi-axes and peak pressure of an ellipse fitted to
- * the nodal pressures.
+ * A contact patch of the wheel on the rail against Hertz's solution
+ * (SPEC 8): semi-axes and peak pressure of an ellipse fitted to the nodal
+ * pressures, for the static solve and for the rolling snapshots.
  */
 #ifndef wheelrail_verification_hertz_patch_h
 #define wheelrail_verification_hertz_patch_h
 
 #include <wheelrail/postprocess/postprocessor.h>
 
+#include <vector>
+
 namespace WheelRail
 {
   namespace Verification
   {
+    /** A node of a contact patch: reference position, pressure [Pa], normal force [N]. */
+    struct PatchNode
+    {
+      double x, y, pressure, force;
+    };
+
+    /** The Hertzian ellipse p^2 = p0^2 (1 - (x - xc)^2/a^2 - y^2/b^2) fitted
+     *  by least squares to the nodes with p > 25 % of the largest (the edge
+     *  nodes' tributary areas reach beyond the patch); xc is the
+     *  force-weighted centre. */
+    struct EllipseFit
+    {
+      double       p0 = 0, a = 0, b = 0, xc = 0;
+      double       force = 0, p_max = 0; ///< sum of the nodal forces [N], largest pressure [Pa]
+      unsigned int n_contact = 0;        ///< nodes with p > 0
+    };
+    EllipseFit
+    fit_hertz_ellipse(const std::vector<PatchNode> &nodes);
+
+    /** Print the fit's a, b, p0 against Hertz's for the normal force
+     *  @p normal_force [N] (the parameters' radii and material), each with
+     *  its relative error and the verdict for @p tolerance; returns whether
+     *  all three are within it. */
+    bool
+    report_hertz_fit(const SimulatorAccess &access,
+                     const EllipseFit      &fit,
+                     const double           normal_force,
+                     const double           tolerance);
+
     /** Print the comparison for the normal force @p contact_force [N] of
      *  the static solve. */
     void
