@@ -1,0 +1,249 @@
+#!/usr/bin/python3
+"""Mesh and time-step convergence of a rolling case against exact theory.
+
+Runs (or reads) wheelrail results of one rolling case at several minimum cell
+sizes h and time steps, and compares each run's contact patch at instant t
+(patch_t.csv) with Hertz and with the half-space solution of the same normal
+and longitudinal force (scripts/halfspace_bem.py, Kalker's exact theory of
+steady rolling):
+
+  p0, a, b     Hertzian ellipse p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2) fitted to the
+               rail-node pressures above 25 % of the largest (as the program's
+               own fit), against Hertz at the patch's normal force
+  L(y=0)       length of the row of rail nodes in contact nearest y = 0
+  mu_a         F_x / F_N of the patch at t; its spread (max - min) / mean over
+               the statistics rows of the last 20 mm before O
+  creepage     rigid creepage (v_x - omega r_eff) / v_x: mean over the last
+               20 mm before O, against the half-space creepage at the same F_x
+  slip area    area fraction of the rail nodes in contact that slip (eq. 5 as
+               decided on the slave nodes), against the half-space fraction
+  RMS p, q_x   RMS differences along y = 0 of the pressure (over p0) and the
+               longitudinal shear (over f p0) from the half-space solution
+
+Usage:
+  convergence_study.py --run --base CASE.prm --work DIR [--np 2]
+        runs CASE.prm at the variants of --variants (label:h:dt, default the
+        h 1.32 / 0.66 / 0.33 mm at dt = 2.6e-8 s and h 0.66 mm at dt / 2)
+        into DIR/LABEL (an existing DIR/LABEL/patch_t.csv is reused)
+  convergence_study.py --work DIR [--variants ...] [--markdown FILE] [--figure PNG]
+        compares the runs found there
+
+Coulomb friction only (constant f, read from each run's parameters.prm).
+"""
+import argparse
+import csv
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# scripts/halfspace.py: the half-space case on a grid, its solvers and fields
+import halfspace as hs  # noqa: E402
+
+DEFAULT_VARIANTS = ["h1.32:0.00132:2.6e-8", "h0.66:0.00066:2.6e-8",
+                    "h0.66-dt/2:0.00066:1.3e-8", "h0.33:0.00033:2.6e-8"]
+
+
+def read_parameters(path):
+    """The entries of a parameters.prm as {'Subsection/.../Name': value}."""
+    entries, stack = {}, []
+    with open(path) as f:
+        for line in f:
+            line = line.split("#")[0].strip()
+            if line.startswith("subsection "):
+                stack.append(line[len("subsection "):].strip())
+            elif line == "end":
+                stack.pop()
+            elif line.startswith("set "):
+                name, value = line[4:].split("=", 1)
+                entries["/".join(stack + [name.strip()])] = value.strip()
+    return entries
+
+
+def read_csv(path):
+    with open(path) as f:
+        lines = [l for l in f if not l.startswith("#")]
+    rows = list(csv.DictReader(lines))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+
+
+def read_statistics(path):
+    """deal.II TableHandler text with separate column descriptions."""
+    names, data = [], []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("# wheelrail"):
+                continue
+            if line.startswith("#"):
+                names.append(line.split(":", 1)[1].strip())
+            elif line.strip():
+                data.append([float(v) for v in line.split()])
+    data = np.array(data)
+    return {n: data[:, i] for i, n in enumerate(names)}
+
+
+def patch_centre(path):
+    with open(path) as f:
+        head = f.readline()
+    return float(head.split("patch centre x = ")[1].split(" m")[0])
+
+
+def fit_ellipse(x, y, p, force):
+    inside = p > 0
+    xc = np.sum(force[inside] * x[inside]) / np.sum(force[inside])
+    use = inside & (p >= 0.25 * p[inside].max())
+    A = np.column_stack([np.ones(use.sum()), (x[use] - xc) ** 2, y[use] ** 2])
+    c = np.linalg.lstsq(A, p[use] ** 2, rcond=None)[0]
+    return np.sqrt(c[0]), np.sqrt(-c[0] / c[1]), np.sqrt(-c[0] / c[2])
+
+
+def analyse(directory, nx, ny):
+    prm = read_parameters(os.path.join(directory, "parameters.prm"))
+    law = prm["Contact/Friction law"]
+    if law != "constant":
+        raise SystemExit(f"{directory}: friction law '{law}': this study compares Coulomb runs")
+    f = float(prm["Contact/Static friction coefficient"])
+    E = float(prm["Material/Young's modulus"])
+    nu = float(prm["Material/Poisson's ratio"])
+    Rw = float(prm["Geometry/Wheel/Radius"])
+    Rr = float(prm["Geometry/Rail/Profile radius"])
+    V = float(prm["Wheelset/Rolling speed"])
+    patch_file = os.path.join(directory, "patch_t.csv")
+    P = read_csv(patch_file)
+    xc = patch_centre(patch_file)
+    inc = P["in_contact"] > 0
+    Fn = np.sum(P["F_n"][inc])
+    Fx = np.sum(P["shear_x"][inc] * P["area"][inc])
+    p0, a, b = fit_ellipse(P["x"], P["y"], P["pressure"], P["F_n"])
+    slip = inc & (P["adhesion_eq5"] == 0)
+    slip_fe = np.sum(P["area"][slip]) / np.sum(P["area"][inc])
+    row = np.abs(P["y"]) == np.abs(P["y"]).min()
+    xs = P["x"][row & inc]
+    length = xs.max() - xs.min() if xs.size else 0.
+
+    S = read_statistics(os.path.join(directory, "statistics"))
+    last = (S["wheel x [m]"] >= -0.020) & (S["wheel x [m]"] <= 0.)
+    mu = S["mu_a [-]"][last]
+    creep = S["creepage [-]"][last]
+
+    # the half-space solution of the same case at the patch's F_N and F_x
+    grid, p, _, hertz, X, Y, _ = hs.elliptic_case(nx, ny, 1.1, Fn, Rw, Rr, E, nu)
+    sol = hs.rolling(grid, p, hs.make_law("coulomb", f, 0, 0, 0), V, fx=Fx)
+    fl = hs.fields(grid, p, sol, V)
+    mid = grid.shape[1] // 2
+    ref = dict(x=X[:, mid], p=fl["p"][:, mid], q_x=fl["q_x"][:, mid])
+    contact = sol["contact"]
+    slip_hs = (contact & ~sol["stick"]).sum() / contact.sum()
+    x_fe = P["x"][row] - xc
+    p_hs = np.interp(x_fe, ref["x"], ref["p"], left=0., right=0.)
+    q_hs = np.interp(x_fe, ref["x"], ref["q_x"], left=0., right=0.)
+    compared = (P["in_contact"][row] > 0) | (p_hs > 0)
+    p0_hs = p.max()
+    rms_p = np.sqrt(np.mean((P["pressure"][row][compared] - p_hs[compared]) ** 2)) / p0_hs
+    rms_q = np.sqrt(np.mean((P["shear_x"][row][compared] - q_hs[compared]) ** 2)) / (f * p0_hs)
+    return dict(Fn=Fn, Fx=Fx, mu=Fx / Fn, p0=p0, a=a, b=b, hertz=hertz, length=length,
+                mu_spread=(mu.max() - mu.min()) / abs(mu.mean()) if mu.size else float("nan"),
+                creep=creep.mean() if creep.size else float("nan"),
+                creep_hs=sol["xi"], slip=slip_fe, slip_hs=slip_hs,
+                rms_p=rms_p, rms_q=rms_q, f=f, row_x=x_fe, row_p=P["pressure"][row],
+                row_q=P["shear_x"][row], ref=ref)
+
+
+def run_variants(args, variants):
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    binary = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "wheelrail")
+    for label, h, dt in variants:
+        out = os.path.abspath(os.path.join(args.work, label))
+        if os.path.exists(os.path.join(out, "patch_t.csv")):
+            print(f"{label}: reusing {out}")
+            continue
+        os.makedirs(out, exist_ok=True)
+        prm = os.path.join(out, "case.prm")
+        with open(prm, "w") as f:
+            f.write(f"include {os.path.abspath(args.base)}\n"
+                    f"subsection Problem\n  set Output directory = {out}\nend\n"
+                    f"subsection Geometry\n  subsection Mesh\n"
+                    f"    set Minimum cell size = {h}\n  end\nend\n"
+                    f"subsection Time integration\n  set Time step = {dt}\nend\n")
+        print(f"{label}: running h = {h} m, dt = {dt} s", flush=True)
+        with open(os.path.join(out, "screen.log"), "w") as log:
+            subprocess.run(["mpirun", "-np", str(args.np), binary, prm], stdout=log,
+                           stderr=subprocess.STDOUT, env=env, check=True)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
+    parser.add_argument("--variants", nargs="+", default=DEFAULT_VARIANTS,
+                        help="LABEL:h:dt, h and dt in m and s")
+    parser.add_argument("--run", action="store_true", help="run the variants that are missing")
+    parser.add_argument("--base", help="--run: the case file")
+    parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
+    parser.add_argument("--nx", type=int, default=64, help="half-space elements along x")
+    parser.add_argument("--ny", type=int, default=49, help="half-space elements along y (odd)")
+    parser.add_argument("--markdown", help="write the table to this file")
+    parser.add_argument("--figure", help="write the shear and pressure along y = 0 to this PNG")
+    args = parser.parse_args()
+    variants = [tuple(v.split(":")) for v in args.variants]
+    if args.run:
+        if not args.base:
+            parser.error("--run needs --base")
+        run_variants(args, variants)
+
+    results = []
+    for label, h, dt in variants:
+        d = os.path.join(args.work, label)
+        if not os.path.exists(os.path.join(d, "patch_t.csv")):
+            print(f"{label}: no {d}/patch_t.csv, left out")
+            continue
+        results.append((label, analyse(d, args.nx, args.ny)))
+    if not results:
+        raise SystemExit("no runs to compare")
+
+    head = ("| run | F_N [kN] | mu_a at t | mu_a spread, last 20 mm | p0 [MPa] (Hertz) | a [mm] | "
+            "b [mm] | L on y=0 [mm] | creepage FE / half-space [1e-3] | slip area FE / HS | "
+            "RMS p / p0 | RMS q_x / (f p0) |")
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
+    for label, r in results:
+        h = r["hertz"]
+        lines.append(
+            f"| {label} | {r['Fn'] / 1e3:.2f} | {r['mu']:.3f} | {100 * r['mu_spread']:.1f} % | "
+            f"{r['p0'] / 1e6:.0f} ({h['p0'] / 1e6:.0f}) | {r['a'] * 1e3:.3f} ({h['a'] * 1e3:.3f}) | "
+            f"{r['b'] * 1e3:.3f} ({h['b'] * 1e3:.3f}) | {r['length'] * 1e3:.2f} | "
+            f"{r['creep'] * 1e3:.3f} / {r['creep_hs'] * 1e3:.3f} | {r['slip']:.3f} / "
+            f"{r['slip_hs']:.3f} | {100 * r['rms_p']:.1f} % | {100 * r['rms_q']:.1f} % |")
+    table = "\n".join(lines)
+    print(table)
+    print(f"(half-space grid {args.nx} x {args.ny} elements over 1.1 x the Hertz semi-axes)")
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write(table + "\n")
+    if args.figure:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+        ref = results[-1][1]["ref"]
+        axes[0].plot(ref["x"] * 1e3, ref["p"] / 1e6, "k-", lw=2, label="half-space")
+        axes[1].plot(ref["x"] * 1e3, ref["q_x"] / 1e6, "k-", lw=2, label="half-space")
+        for label, r in results:
+            axes[0].plot(r["row_x"] * 1e3, r["row_p"] / 1e6, ".-", ms=3, label=label)
+            axes[1].plot(r["row_x"] * 1e3, r["row_q"] / 1e6, ".-", ms=3, label=label)
+        axes[0].set_ylabel("pressure [MPa]")
+        axes[1].set_ylabel("shear x [MPa]")
+        for ax in axes:
+            ax.set_xlabel("x - patch centre [mm] (rolling towards +x)")
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=8)
+        fig.suptitle(f"Along y = 0 at instant t; half-space at the last run's F_N, F_x "
+                     f"({args.nx} x {args.ny} elements)")
+        fig.tight_layout()
+        fig.savefig(args.figure, dpi=120)
+        print(f"wrote {args.figure}")
+
+
+if __name__ == "__main__":
+    main()
