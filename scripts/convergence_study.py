@@ -22,11 +22,18 @@ steady rolling):
 
 Usage:
   convergence_study.py --run --base CASE.prm --work DIR [--np 2]
-        runs CASE.prm at the variants of --variants (label:h:dt, default the
-        h 1.32 / 0.66 / 0.33 mm at dt = 2.6e-8 s and h 0.66 mm at dt / 2)
+        runs CASE.prm at the variants of --variants (LABEL:h:dt[:mu_n], default
+        the h 1.32 / 0.66 / 0.33 mm at dt = 2.6e-8 s and h 0.66 mm at dt / 2;
+        mu_n, if given, replaces the case's Wheelset/Nominal traction coefficient)
         into DIR/LABEL (an existing DIR/LABEL/patch_t.csv is reused)
   convergence_study.py --work DIR [--variants ...] [--markdown FILE] [--figure PNG]
         compares the runs found there
+  convergence_study.py --work DIR --variants ... --check p0=0.05 rms_q=0.1 ...
+        also checks each run against limits and exits with status 1 if one is
+        exceeded: p0, a, b (relative error from Hertz), L (relative error of
+        the length on y = 0 from 2a), creep (relative error of the creepage from
+        the half-space one), slip (absolute difference of the slip-area
+        fractions), rms_p, rms_q (the RMS differences), spread (mu_a spread)
 
 Coulomb friction only (constant f, read from each run's parameters.prm).
 """
@@ -151,10 +158,36 @@ def analyse(directory, nx, ny):
                 row_q=P["shear_x"][row], ref=ref)
 
 
+# The errors --check can limit, each as a function of analyse()'s result.
+CHECKS = {
+    "p0": lambda r: abs(r["p0"] / r["hertz"]["p0"] - 1),
+    "a": lambda r: abs(r["a"] / r["hertz"]["a"] - 1),
+    "b": lambda r: abs(r["b"] / r["hertz"]["b"] - 1),
+    "L": lambda r: abs(r["length"] / (2 * r["hertz"]["a"]) - 1),
+    "creep": lambda r: abs(r["creep"] / r["creep_hs"] - 1),
+    "slip": lambda r: abs(r["slip"] - r["slip_hs"]),
+    "rms_p": lambda r: r["rms_p"],
+    "rms_q": lambda r: r["rms_q"],
+    "spread": lambda r: r["mu_spread"],
+}
+
+
+def check(results, limits):
+    """Prints each limited error of each run; True if all are within."""
+    passed = True
+    for label, r in results:
+        for name, limit in limits.items():
+            error = CHECKS[name](r)
+            ok = bool(error <= limit)
+            passed &= ok
+            print(f"{label}: {name:6s} error {error:.3f}  limit {limit:.3f}  {'ok' if ok else 'FAILED'}")
+    return passed
+
+
 def run_variants(args, variants):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     binary = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "wheelrail")
-    for label, h, dt in variants:
+    for label, h, dt, mu_n in variants:
         out = os.path.abspath(os.path.join(args.work, label))
         if os.path.exists(os.path.join(out, "patch_t.csv")):
             print(f"{label}: reusing {out}")
@@ -167,7 +200,10 @@ def run_variants(args, variants):
                     f"subsection Geometry\n  subsection Mesh\n"
                     f"    set Minimum cell size = {h}\n  end\nend\n"
                     f"subsection Time integration\n  set Time step = {dt}\nend\n")
-        print(f"{label}: running h = {h} m, dt = {dt} s", flush=True)
+            if mu_n is not None:
+                f.write(f"subsection Wheelset\n  set Nominal traction coefficient = {mu_n}\nend\n")
+        print(f"{label}: running h = {h} m, dt = {dt} s"
+              + (f", mu_n = {mu_n}" if mu_n is not None else ""), flush=True)
         with open(os.path.join(out, "screen.log"), "w") as log:
             subprocess.run(["mpirun", "-np", str(args.np), binary, prm], stdout=log,
                            stderr=subprocess.STDOUT, env=env, check=True)
@@ -178,7 +214,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
     parser.add_argument("--variants", nargs="+", default=DEFAULT_VARIANTS,
-                        help="LABEL:h:dt, h and dt in m and s")
+                        help="LABEL:h:dt[:mu_n], h and dt in m and s")
     parser.add_argument("--run", action="store_true", help="run the variants that are missing")
     parser.add_argument("--base", help="--run: the case file")
     parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
@@ -186,15 +222,22 @@ def main():
     parser.add_argument("--ny", type=int, default=49, help="half-space elements along y (odd)")
     parser.add_argument("--markdown", help="write the table to this file")
     parser.add_argument("--figure", help="write the shear and pressure along y = 0 to this PNG")
+    parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
+                        help="limits of the errors (names: " + ", ".join(CHECKS) + ")")
     args = parser.parse_args()
-    variants = [tuple(v.split(":")) for v in args.variants]
+    variants = []
+    for v in args.variants:
+        fields = v.split(":")
+        if len(fields) not in (3, 4):
+            parser.error(f"variant '{v}': expected LABEL:h:dt or LABEL:h:dt:mu_n")
+        variants.append((fields[0], fields[1], fields[2], fields[3] if len(fields) == 4 else None))
     if args.run:
         if not args.base:
             parser.error("--run needs --base")
         run_variants(args, variants)
 
     results = []
-    for label, h, dt in variants:
+    for label, _, _, _ in variants:
         d = os.path.join(args.work, label)
         if not os.path.exists(os.path.join(d, "patch_t.csv")):
             print(f"{label}: no {d}/patch_t.csv, left out")
@@ -218,6 +261,16 @@ def main():
     table = "\n".join(lines)
     print(table)
     print(f"(half-space grid {args.nx} x {args.ny} elements over 1.1 x the Hertz semi-axes)")
+    if args.check:
+        limits = {}
+        for item in args.check:
+            name, _, value = item.partition("=")
+            if name not in CHECKS or not value:
+                parser.error(f"--check {item}: expected NAME=LIMIT with NAME one of "
+                             + ", ".join(CHECKS))
+            limits[name] = float(value)
+        if not check(results, limits):
+            raise SystemExit("convergence_study.py: a limit is exceeded")
     if args.markdown:
         with open(args.markdown, "w") as f:
             f.write(table + "\n")
