@@ -22,9 +22,9 @@ steady rolling):
 
 Usage:
   convergence_study.py --run --base CASE.prm --work DIR [--np 2]
-        runs CASE.prm at the variants of --variants (LABEL:h:dt[:mu_n], default
+        runs CASE.prm at the variants of --variants (LABEL:h:dt[:xi_0], default
         the h 1.32 / 0.66 / 0.33 mm at dt = 2.6e-8 s and h 0.66 mm at dt / 2;
-        mu_n, if given, replaces the case's Wheelset/Nominal traction coefficient)
+        xi_0, if given, replaces the case's Wheelset/Initial creepage)
         into DIR/LABEL (an existing DIR/LABEL/patch_t.csv is reused)
   convergence_study.py --work DIR [--variants ...] [--markdown FILE] [--figure PNG]
         compares the runs found there
@@ -187,7 +187,7 @@ def check(results, limits):
 def run_variants(args, variants):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     binary = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "wheelrail")
-    for label, h, dt, mu_n in variants:
+    for label, h, dt, xi0 in variants:
         out = os.path.abspath(os.path.join(args.work, label))
         if os.path.exists(os.path.join(out, "patch_t.csv")):
             print(f"{label}: reusing {out}")
@@ -200,10 +200,10 @@ def run_variants(args, variants):
                     f"subsection Geometry\n  subsection Mesh\n"
                     f"    set Minimum cell size = {h}\n  end\nend\n"
                     f"subsection Time integration\n  set Time step = {dt}\nend\n")
-            if mu_n is not None:
-                f.write(f"subsection Wheelset\n  set Nominal traction coefficient = {mu_n}\nend\n")
+            if xi0 is not None:
+                f.write(f"subsection Wheelset\n  set Initial creepage = {xi0}\nend\n")
         print(f"{label}: running h = {h} m, dt = {dt} s"
-              + (f", mu_n = {mu_n}" if mu_n is not None else ""), flush=True)
+              + (f", xi_0 = {xi0}" if xi0 is not None else ""), flush=True)
         with open(os.path.join(out, "screen.log"), "w") as log:
             subprocess.run(["mpirun", "-np", str(args.np), binary, prm], stdout=log,
                            stderr=subprocess.STDOUT, env=env, check=True)
@@ -214,7 +214,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
     parser.add_argument("--variants", nargs="+", default=DEFAULT_VARIANTS,
-                        help="LABEL:h:dt[:mu_n], h and dt in m and s")
+                        help="LABEL:h:dt[:xi_0], h and dt in m and s")
     parser.add_argument("--run", action="store_true", help="run the variants that are missing")
     parser.add_argument("--base", help="--run: the case file")
     parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
@@ -229,7 +229,7 @@ def main():
     for v in args.variants:
         fields = v.split(":")
         if len(fields) not in (3, 4):
-            parser.error(f"variant '{v}': expected LABEL:h:dt or LABEL:h:dt:mu_n")
+            parser.error(f"variant '{v}': expected LABEL:h:dt or LABEL:h:dt:xi_0")
         variants.append((fields[0], fields[1], fields[2], fields[3] if len(fields) == 4 else None))
     if args.run:
         if not args.base:

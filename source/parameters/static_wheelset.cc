@@ -126,6 +126,45 @@ namespace WheelRail
                       Patterns::Double(0, 10),
                       "The torque rises linearly from 0 over this time [s], "
                       "range [0, 10]; 0 = applied at once.");
+    prm.declare_entry("Initial creepage",
+                      "0",
+                      Patterns::Double(-0.1, 0.1),
+                      "Longitudinal creepage xi_0 = (V - omega r) / V with which the "
+                      "wheel starts rolling [-], range [-0.1, 0.1]; negative for a "
+                      "driving wheel (omega r > V), 0 = free rolling.");
+    prm.declare_entry("Creepage control time",
+                      "0",
+                      Patterns::Double(0, 10),
+                      "Until this time the wheel's angular velocity is held at "
+                      "v_x (1 - xi_0) / r (creepage control: the axle supplies "
+                      "whatever torque that takes, and its work enters the energy "
+                      "balance); after it the torque of the nominal traction "
+                      "coefficient drives the wheel [s], range [0, 10]; 0 = torque "
+                      "control from the start. Holding the creepage removes the "
+                      "spin-up of the wheelset under a torque (a first-order lag of "
+                      "about 1 ms); the wheel's torsional vibration that the onset "
+                      "of traction excites is removed by the run-up damping.");
+    prm.declare_entry("Run-up damping",
+                      "0",
+                      Patterns::Double(0, 1e6),
+                      "alpha of a mass-proportional damping of the FE nodes' "
+                      "velocity relative to the rigid motion of the wheelset "
+                      "(wheel nodes: axle velocity + omega e_y x r; rail nodes: 0), "
+                      "f = -alpha m (v - v_rigid), acting until Run-up time [1/s], "
+                      "range [0, 1e6]; 0 = none. It removes the wheel's torsional "
+                      "and bending vibrations that the onset of traction excites "
+                      "(about 680 Hz, lightly damped: mu_a swings by +-13 % for "
+                      "several ms) so that the traction is steady when the patch is "
+                      "sampled. It also acts on the rolling deformation convected "
+                      "through the patch (v - v_rigid = -V du/dx there, about "
+                      "0.04 m/s), so it is for the run-up only, before the patch "
+                      "is sampled. Critical for a mode of angular frequency w at "
+                      "alpha = 2 w. Its dissipation enters "
+                      "the energy balance.");
+    prm.declare_entry("Run-up time",
+                      "0",
+                      Patterns::Double(0, 10),
+                      "The run-up damping acts while t < this time [s], range [0, 10].");
     prm.declare_entry("Static start",
                       "true",
                       Patterns::Bool(),
@@ -141,15 +180,19 @@ namespace WheelRail
   WheelsetParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Wheelset");
-    unsprung_mass        = prm.get_double("Unsprung mass");
-    sprung_mass          = prm.get_double("Sprung mass");
-    suspension_stiffness = prm.get_double("Suspension stiffness");
-    suspension_damping   = prm.get_double("Suspension damping");
-    axle_inertia         = prm.get_double("Axle rotational inertia");
-    rolling_speed        = prm.get_double("Rolling speed");
-    traction_coefficient = prm.get_double("Nominal traction coefficient");
-    torque_ramp_time     = prm.get_double("Torque ramp time");
-    static_start         = prm.get_bool("Static start");
+    unsprung_mass         = prm.get_double("Unsprung mass");
+    sprung_mass           = prm.get_double("Sprung mass");
+    suspension_stiffness  = prm.get_double("Suspension stiffness");
+    suspension_damping    = prm.get_double("Suspension damping");
+    axle_inertia          = prm.get_double("Axle rotational inertia");
+    rolling_speed         = prm.get_double("Rolling speed");
+    traction_coefficient  = prm.get_double("Nominal traction coefficient");
+    torque_ramp_time      = prm.get_double("Torque ramp time");
+    initial_creepage      = prm.get_double("Initial creepage");
+    creepage_control_time = prm.get_double("Creepage control time");
+    runup_damping         = prm.get_double("Run-up damping");
+    runup_time            = prm.get_double("Run-up time");
+    static_start          = prm.get_bool("Static start");
     prm.leave_subsection();
   }
 } // namespace WheelRail

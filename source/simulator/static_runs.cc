@@ -200,6 +200,21 @@ namespace WheelRail
           << fmt(radius * 1e3, 7) << " mm, omega = " << fmt(wheelset->angular_velocity(), 6)
           << " rad/s, driving torque " << fmt(wheelset->torque(1e30) * 1e-3, 5)
           << " kN m (mu_n = " << fmt(parameters.wheelset.traction_coefficient) << ")" << std::endl;
+    const WheelsetParameters &wp = parameters.wheelset;
+    if (wp.creepage_control_time > 0)
+      {
+        pcout << "  creepage held at " << fmt(wp.initial_creepage)
+              << " (omega = v_x (1 - xi_0) / r) ";
+        if (wp.creepage_control_time < parameters.solver.end_time)
+          pcout << "until t = " << fmt(wp.creepage_control_time * 1e3) << " ms, the torque after";
+        else
+          pcout << "for the whole run";
+        pcout << std::endl;
+      }
+    if (wp.runup_damping > 0 && wp.runup_time > 0)
+      pcout << "  run-up damping alpha = " << fmt(wp.runup_damping)
+            << " 1/s of the velocity relative to the wheelset's rigid motion until t = "
+            << fmt(wp.runup_time * 1e3) << " ms" << std::endl;
   }
 
 

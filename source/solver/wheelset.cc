@@ -71,7 +71,7 @@ namespace WheelRail
     velocity      = Tensor<1, dim>({prm.rolling_speed, 0., 0.});
     // rolling towards +x turns the wheel about +y: the contact point
     // (x - x_axle = -r e_z) then has omega e_y x (-r e_z) = -V e_x
-    omega = prm.rolling_speed / rolling_radius;
+    omega = prm.rolling_speed * (1. - prm.initial_creepage) / rolling_radius;
     theta = 0;
     d_c = v_c = 0;
     work = damper_loss = 0;
@@ -106,8 +106,7 @@ namespace WheelRail
     const double ax = force[0] / (m_axle + m_bore + Mc);
     const double az = (force[2] - m_axle * g + Fs) / (m_axle + m_bore);
     const double ac = (-Mc * g - Fs) / Mc;
-    const double T  = torque(t);
-    const double al = (moment + T) / (prm.axle_inertia + i_bore);
+    const double I  = prm.axle_inertia + i_bore;
 
     const double v_rel = v_c - velocity[2];
     damper_loss += prm.suspension_damping * v_rel * v_rel * h;
@@ -115,7 +114,19 @@ namespace WheelRail
     velocity[0] += h * ax;
     velocity[2] += h * az;
     v_c += h * ac;
-    omega += h * al;
+    // under creepage control the axle turns at v_x (1 - xi_0) / r: its
+    // torque is what that angular acceleration takes against the FE moment
+    double T;
+    if (creepage_controlled(t))
+      {
+        omega = velocity[0] * (1. - prm.initial_creepage) / radius;
+        T     = I * (omega - omega_old) / h - moment;
+      }
+    else
+      {
+        T = torque(t);
+        omega += h * (moment + T) / I;
+      }
     work += T * h * 0.5 * (omega_old + omega);
     displacement[0] += dt * velocity[0];
     displacement[2] += dt * velocity[2];

@@ -268,6 +268,9 @@ namespace WheelRail
     {
       const std::vector<Sample> &samples = in.samples.samples();
       require_rolling(in);
+      AssertThrow(in.access.parameters.wheelset.creepage_control_time == 0,
+                  ExcMessage("Verification: the traction check compares with steady rolling "
+                             "under the torque; Wheelset/Creepage control time must be 0."));
       // mean achieved traction coefficient over the second half
       const unsigned int first = samples.size() / 2;
       double             fl = 0, fn = 0, cof = 0;

@@ -216,6 +216,10 @@ namespace WheelRail
     double rolling_speed;
     double traction_coefficient;
     double torque_ramp_time;
+    double initial_creepage;      ///< xi_0 = (V - omega r) / V at the start [-]
+    double creepage_control_time; ///< omega follows v_x (1 - xi_0) / r until then [s]
+    double runup_damping;         ///< alpha of the run-up damping [1/s]
+    double runup_time;            ///< the run-up damping acts until then [s]
     bool   static_start;
 
     static void

@@ -221,6 +221,12 @@ namespace WheelRail
      *  move the wheelset over the step. */
     void
     advance_wheelset(const double h);
+    /** Wheelset/Run-up damping: adds alpha m (v - v_rigid) to f (the sign of
+     *  internal forces) and returns its dissipated power on the local DoFs,
+     *  alpha m |v - v_rigid|^2; its work on the rigid motion over the step
+     *  (an external work) goes to @p work. */
+    double
+    add_runup_damping(const double h, double &work);
     /** Move the prescribed DoFs to t_{n+1}; adds their reactions' work to
      *  @p work and, with energies, their kinetic energy to @p ke. */
     void

@@ -50,7 +50,8 @@ namespace WheelRail
     steady_traction_coefficient() const;
 
     /** Start the rolling run: axle at @p static_axle (after the static
-     *  solve), velocity V along x, angular velocity +V / r_eff about y
+     *  solve), velocity V along x, angular velocity +V (1 - xi_0) / r_eff
+     *  about y (xi_0 the initial creepage)
      *  (SPEC 5.3 writes -V/r_eff, which with its own v = V e_x + omega x
      *  (x - x_axle) would make the contact point move at 2V). */
     void
@@ -69,14 +70,26 @@ namespace WheelRail
         ar.pod(*x);
     }
 
-    /** Torque about +y at time t [N m] (positive drives towards +x). */
+    /** Whether at time t the angular velocity is held at the initial
+     *  creepage (Wheelset/Creepage control time) rather than driven by the
+     *  torque. */
+    bool
+    creepage_controlled(const double t) const
+    {
+      return t < prm.creepage_control_time;
+    }
+
+    /** Torque about +y at time t under torque control [N m] (positive drives
+     *  towards +x). */
     double
     torque(const double t) const;
 
     /**
      * Advance by one step: @p force and @p moment are the FE forces on the
      * bore nodes (summed over all ranks, gravity of the bore nodes included)
-     * and their moment about the axle (y component).
+     * and their moment about the axle (y component). Under creepage control
+     * the angular velocity follows the new v_x; otherwise the torque and the
+     * moment accelerate the rotation.
      */
     void
     advance(const Tensor<1, dim> &force,

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# ctest driver of the coarse comparison with exact steady rolling theory:
+# prm/compare_coulomb.prm (Coulomb f = 0.5, creepage held at the half-space
+# creepage of F_x / F_N = 0.3, run-up damping) on 1.32 mm cells (four times
+# the paper's) with four times the paper's step, then
+# scripts/convergence_study.py --check on its patch at instant t against
+# Hertz and the half-space solution at the run's own F_N and F_x.
+# The limits are what this mesh resolves, with a margin of about a third
+# (doc/convergence.md gives the figures at h 1.32, 0.66 and 0.33 mm).
+# Arguments: the wheelrail executable, the source directory.
+set -euo pipefail
+exe=$1 src=$2
+rm -rf h1.32
+cat > case.prm <<PRM
+include $src/prm/compare_coulomb.prm
+subsection Problem
+  set Output directory = h1.32
+end
+subsection Geometry
+  subsection Mesh
+    set Minimum cell size = 0.00132
+  end
+end
+subsection Time integration
+  set Time step = 1.04e-7
+end
+PRM
+"$exe" case.prm > wheelrail.log
+/usr/bin/python3 "$src/scripts/convergence_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
+  --nx 32 --ny 17 --check p0=0.06 a=0.02 b=0.02 creep=0.02 slip=0.04 rms_p=0.04 rms_q=0.05 spread=0.07
