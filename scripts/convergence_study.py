@@ -4,8 +4,8 @@
 Runs (or reads) wheelrail results of one rolling case at several minimum cell
 sizes h and time steps, and compares each run's contact patch at instant t
 (patch_t.csv) with Hertz and with the half-space solution of the same normal
-and longitudinal force (scripts/halfspace_bem.py, Kalker's exact theory of
-steady rolling):
+and longitudinal force (Kalker's exact theory of steady rolling, by
+scripts/hs_compare.py, which plot.py uses too):
 
   p0, a, b     Hertzian ellipse p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2) fitted to the
                rail-node pressures above 25 % of the largest (as the program's
@@ -38,7 +38,6 @@ Usage:
 Coulomb friction only (constant f, read from each run's parameters.prm).
 """
 import argparse
-import csv
 import os
 import subprocess
 import sys
@@ -46,55 +45,11 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-# scripts/halfspace.py: the half-space case on a grid, its solvers and fields
-import halfspace as hs  # noqa: E402
+# scripts/hs_compare.py: the run's files and the half-space comparison of its patch
+import hs_compare as hc  # noqa: E402
 
 DEFAULT_VARIANTS = ["h1.32:0.00132:2.6e-8", "h0.66:0.00066:2.6e-8",
                     "h0.66-dt/2:0.00066:1.3e-8", "h0.33:0.00033:2.6e-8"]
-
-
-def read_parameters(path):
-    """The entries of a parameters.prm as {'Subsection/.../Name': value}."""
-    entries, stack = {}, []
-    with open(path) as f:
-        for line in f:
-            line = line.split("#")[0].strip()
-            if line.startswith("subsection "):
-                stack.append(line[len("subsection "):].strip())
-            elif line == "end":
-                stack.pop()
-            elif line.startswith("set "):
-                name, value = line[4:].split("=", 1)
-                entries["/".join(stack + [name.strip()])] = value.strip()
-    return entries
-
-
-def read_csv(path):
-    with open(path) as f:
-        lines = [l for l in f if not l.startswith("#")]
-    rows = list(csv.DictReader(lines))
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
-
-
-def read_statistics(path):
-    """deal.II TableHandler text with separate column descriptions."""
-    names, data = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("# wheelrail"):
-                continue
-            if line.startswith("#"):
-                names.append(line.split(":", 1)[1].strip())
-            elif line.strip():
-                data.append([float(v) for v in line.split()])
-    data = np.array(data)
-    return {n: data[:, i] for i, n in enumerate(names)}
-
-
-def patch_centre(path):
-    with open(path) as f:
-        head = f.readline()
-    return float(head.split("patch centre x = ")[1].split(" m")[0])
 
 
 def fit_ellipse(x, y, p, force):
@@ -107,55 +62,34 @@ def fit_ellipse(x, y, p, force):
 
 
 def analyse(directory, nx, ny):
-    prm = read_parameters(os.path.join(directory, "parameters.prm"))
+    prm = hc.read_parameters(directory)
     law = prm["Contact/Friction law"]
     if law != "constant":
         raise SystemExit(f"{directory}: friction law '{law}': this study compares Coulomb runs")
-    f = float(prm["Contact/Static friction coefficient"])
-    E = float(prm["Material/Young's modulus"])
-    nu = float(prm["Material/Poisson's ratio"])
-    Rw = float(prm["Geometry/Wheel/Radius"])
-    Rr = float(prm["Geometry/Rail/Profile radius"])
-    V = float(prm["Wheelset/Rolling speed"])
-    patch_file = os.path.join(directory, "patch_t.csv")
-    P = read_csv(patch_file)
-    xc = patch_centre(patch_file)
-    inc = P["in_contact"] > 0
-    Fn = np.sum(P["F_n"][inc])
-    Fx = np.sum(P["shear_x"][inc] * P["area"][inc])
+    # the half-space solution of the same case at the patch's F_N and F_x
+    r = hc.compare_patch(directory, "t", (nx, ny))
+    if r["note"]:
+        print(f"{directory}: {r['note']}")
+    P = hc.read_patch(directory, "t")
     p0, a, b = fit_ellipse(P["x"], P["y"], P["pressure"], P["F_n"])
-    slip = inc & (P["adhesion_eq5"] == 0)
-    slip_fe = np.sum(P["area"][slip]) / np.sum(P["area"][inc])
-    row = np.abs(P["y"]) == np.abs(P["y"]).min()
-    xs = P["x"][row & inc]
+    rows = hc.axis_rows(P)
+    xs = P["x"][rows][P["in_contact"][rows] > 0]
     length = xs.max() - xs.min() if xs.size else 0.
 
-    S = read_statistics(os.path.join(directory, "statistics"))
-    last = (S["wheel x [m]"] >= -0.020) & (S["wheel x [m]"] <= 0.)
-    mu = S["mu_a [-]"][last]
-    creep = S["creepage [-]"][last]
-
-    # the half-space solution of the same case at the patch's F_N and F_x
-    grid, p, _, hertz, X, Y, _ = hs.elliptic_case(nx, ny, 1.1, Fn, Rw, Rr, E, nu)
-    sol = hs.rolling(grid, p, hs.make_law("coulomb", f, 0, 0, 0), V, fx=Fx)
-    fl = hs.fields(grid, p, sol, V)
-    mid = grid.shape[1] // 2
-    ref = dict(x=X[:, mid], p=fl["p"][:, mid], q_x=fl["q_x"][:, mid])
-    contact = sol["contact"]
-    slip_hs = (contact & ~sol["stick"]).sum() / contact.sum()
-    x_fe = P["x"][row] - xc
-    p_hs = np.interp(x_fe, ref["x"], ref["p"], left=0., right=0.)
-    q_hs = np.interp(x_fe, ref["x"], ref["q_x"], left=0., right=0.)
-    compared = (P["in_contact"][row] > 0) | (p_hs > 0)
-    p0_hs = p.max()
-    rms_p = np.sqrt(np.mean((P["pressure"][row][compared] - p_hs[compared]) ** 2)) / p0_hs
-    rms_q = np.sqrt(np.mean((P["shear_x"][row][compared] - q_hs[compared]) ** 2)) / (f * p0_hs)
-    return dict(Fn=Fn, Fx=Fx, mu=Fx / Fn, p0=p0, a=a, b=b, hertz=hertz, length=length,
+    names, S = hc.read_statistics(directory)
+    wheel_x = hc.column(names, S, "wheel x")
+    last = (wheel_x >= -0.020) & (wheel_x <= 0.)
+    mu = hc.column(names, S, "mu_a")[last]
+    creep = hc.column(names, S, "creepage")[last]
+    axis = r["axis"]
+    return dict(Fn=r["Fn"], Fx=r["Fx"], mu=r["Fx"] / r["Fn"], p0=p0, a=a, b=b, hertz=r["hertz"],
+                length=length,
                 mu_spread=(mu.max() - mu.min()) / abs(mu.mean()) if mu.size else float("nan"),
                 creep=creep.mean() if creep.size else float("nan"),
-                creep_hs=sol["xi"], slip=slip_fe, slip_hs=slip_hs,
-                rms_p=rms_p, rms_q=rms_q, f=f, row_x=x_fe, row_p=P["pressure"][row],
-                row_q=P["shear_x"][row], ref=ref)
+                creep_hs=r["creep_hs"], slip=r["slip_fe"], slip_hs=r["slip_hs"],
+                rms_p=r["rms_p"], rms_q=r["rms_q"], f=r["f_ref"], row_x=r["fe"]["x"],
+                row_p=r["fe"]["p"], row_q=r["fe"]["q_x"],
+                ref=dict(x=axis["x"], p=axis["p"], q_x=axis["q_x"]))
 
 
 # The errors --check can limit, each as a function of analyse()'s result.
