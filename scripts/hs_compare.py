@@ -42,6 +42,20 @@ MARGIN = 1.1
 CAP = 0.995
 
 
+def parse_grid(text, none_allowed=False):
+    """'NXxNY' as (NX, NY) with 4 <= NX <= 512 and NY odd in 3..511 (as
+    halfspace.py's --nx, --ny), '0x0' as (0, 0) if @p none_allowed; None if bad."""
+    try:
+        grid = tuple(int(v) for v in text.lower().split("x"))
+    except ValueError:
+        return None
+    if len(grid) != 2:
+        return None
+    if grid == (0, 0):
+        return grid if none_allowed else None
+    return grid if 4 <= grid[0] <= 512 and 3 <= grid[1] <= 511 and grid[1] % 2 == 1 else None
+
+
 # ----------------------------------------------------------------------------
 # Reading a run
 

@@ -2,7 +2,7 @@
 """Plots and a report page from a wheelrail run's output directory.
 
 Usage:
-    scripts/plot.py RUN_DIR [OTHER_RUN_DIR] [--out DIR] [--check]
+    scripts/plot.py RUN_DIR [OTHER_RUN_DIR] [--out DIR] [--hs-grid 32x17] [--check]
 
 Writes PNG files and report.html into DIR (default RUN_DIR/plots): the
 paper's figures made from the run (Zhao & Li 2016, section 3):
@@ -10,21 +10,34 @@ paper's figures made from the run (Zhao & Li 2016, section 3):
   fig03_contact_nodes.png      nodes in contact at instant t (and the
                                difference to OTHER_RUN_DIR when given)
   fig04_pressure_shear.png     pressure and surface shear along y = 0 with
-                               p f_S and p f_D (also Figs. 11, 15)
+                               p f_S and p f_D (also Figs. 11, 15), and the
+                               half-space solution at t
   fig05_07_adhesion_slip.png   adhesion/slip by eq. 5 and by eq. 6 at
                                t - 5.7 us, t, t + 5.7 us
   fig08_09_velocity.png        velocity of the rail-top node at O and of the
                                wheel node passing O against wheel position
   fig08_09_spectrum.png        their spectra (FFT), dominant peaks labelled
-  fig10_microslip_axis.png     micro-slip along y = 0 at the three instants
+  fig10_microslip_axis.png     micro-slip along y = 0 at the three instants,
+                               and the half-space slip velocity at t
   fig12_trailing_microslip.png mean trailing micro-slip against wheel
                                position, raw and smoothed
   fig13_force_difference.png   F_L(run) - F_L(other run) against wheel
                                position (only with OTHER_RUN_DIR)
   histories.png                F_N, F_L, mu_a and energies against time
+  halfspace_axis.csv           the half-space solution along y = 0 at t: x [m]
+                               (run coordinates), x - patch centre [m],
+                               p, q_x [Pa], |s| [m/s], in_contact
+
+The half-space solution (Kalker's exact steady rolling theory,
+scripts/halfspace.py via scripts/hs_compare.py) is solved at the F_N and F_x
+of the patch at t on a grid of --hs-grid elements (0x0: none); the RMS
+differences along y = 0 (pressure over p0, shear_x over f p0) and the
+slip-area fractions of FE and half-space are printed and listed in
+report.html.
 
 With --check every figure is verified to exist and to show data (each axes
-has at least one artist with finite values); the exit status is 1 if not.
+has at least one artist with finite values), and Figs. 4 and 10 to show the
+half-space solution; the exit status is 1 if not.
 Needs Debian's python3-numpy and python3-matplotlib (run with /usr/bin/python3).
 """
 import argparse
@@ -39,72 +52,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+# scripts/hs_compare.py: the run's files by column name, the half-space comparison
+import hs_compare as hc  # noqa: E402
+from hs_compare import axis_rows, column, read_csv, read_parameters, read_patch, read_statistics  # noqa: E402
+
 INSTANTS = ["t-5.7us", "t", "t+5.7us"]
-
-
-def read_parameters(run):
-    """parameters.prm as {"Section/Sub/Entry": value}."""
-    values, path = {}, []
-    name = os.path.join(run, "parameters.prm")
-    if not os.path.exists(name):
-        return values
-    with open(name) as f:
-        for line in f:
-            line = line.split("#", 1)[0].strip()
-            if line.startswith("subsection "):
-                path.append(line[len("subsection "):].strip())
-            elif line == "end":
-                if path:
-                    path.pop()
-            elif line.startswith("set ") and "=" in line:
-                key, value = line[4:].split("=", 1)
-                values["/".join(path + [key.strip()])] = value.strip()
-    return values
-
-
-def read_statistics(run):
-    """statistics as (column names, array) or (None, None)."""
-    name = os.path.join(run, "statistics")
-    if not os.path.exists(name):
-        return None, None
-    names = []
-    with open(name) as f:
-        for line in f:
-            if line.startswith("# ") and ":" in line and line[2].isdigit():
-                names.append(line.split(":", 1)[1].strip())
-    data = np.loadtxt(name, comments="#", ndmin=2)
-    return names, data
-
-
-def column(names, data, prefix):
-    for i, n in enumerate(names):
-        if n.startswith(prefix):
-            return data[:, i]
-    return None
-
-
-def read_csv(name):
-    """A CSV with '#' comment lines and one header line: dict of arrays."""
-    if not os.path.exists(name):
-        return None
-    with open(name) as f:
-        lines = [l for l in f if not l.startswith("#")]
-    if len(lines) < 2:
-        return None
-    header = [h.strip() for h in lines[0].split(",")]
-    data = np.array([[float(v) for v in l.split(",")] for l in lines[1:] if l.strip()])
-    return {h: data[:, i] for i, h in enumerate(header)}
-
-
-def read_patch(run, instant):
-    return read_csv(os.path.join(run, "patch_%s.csv" % instant))
-
-
-def axis_rows(patch):
-    """Indices of the nodes on the longitudinal axis (smallest |y|), by x."""
-    y = np.abs(patch["y"])
-    on_axis = np.flatnonzero(np.isclose(y, y.min(), rtol=0, atol=1e-9))
-    return on_axis[np.argsort(patch["x"][on_axis])]
 
 
 def wheel_position(stats_names, stats, t):
@@ -198,7 +151,27 @@ class Report:
         return problems
 
 
-def plot_run(run, other, out):
+def half_space(run, grid, out):
+    """hc.compare_patch at t and its axis as halfspace_axis.csv in @p out:
+    (comparison or None, the reason when there is none)."""
+    if not grid[0]:
+        return None, "half-space comparison not asked for (--hs-grid 0x0)"
+    try:
+        r = hc.compare_patch(run, "t", grid)
+    except (hc.hs.InputError, hc.hs.bem.ConvergenceError, KeyError, ValueError) as e:
+        return None, "half-space comparison not made: %s: %s" % (type(e).__name__, e)
+    if r is None:
+        return None, "half-space comparison not made: no patch_t.csv"
+    a = r["axis"]
+    hc.hs.write_csv(os.path.join(out, "halfspace_axis.csv"),
+                    ["x [m]", "x - patch centre [m]", "p [Pa]", "q_x [Pa]", "s [m/s]", "in_contact"],
+                    zip(a["x"] + r["xc"], a["x"], a["p"], a["q_x"], a["s"], a["contact"].astype(float)))
+    return r, None
+
+
+def plot_run(run, other, out, hs_grid=hc.DEFAULT_GRID):
+    """The figures and report.html: (Report, half-space comparison or None,
+    the reason when there is none)."""
     prm = read_parameters(run)
     names, stats = read_statistics(run)
     rep = Report(out)
@@ -207,6 +180,7 @@ def plot_run(run, other, out):
     law = prm.get("Contact/Friction law", "?")
     patches = {i: read_patch(run, i) for i in INSTANTS}
     have_patch = all(p is not None for p in patches.values())
+    comparison, hs_missing = half_space(run, hs_grid, out) if have_patch else (None, "no patch files")
 
     # Fig. 3: nodes in contact at t (and the difference to the other run)
     if have_patch:
@@ -256,13 +230,22 @@ def plot_run(run, other, out):
             ax.plot(x, f_s * pr, ":", c="tab:blue", label="p f_S (f_S = %g)" % f_s)
         if math.isfinite(f_d) and law == "exponential":
             ax.plot(x, f_d * pr, ":", c="tab:green", label="p f_D (f_D = %g)" % f_d)
+        title = "along y = %.3g mm at instant t" % (p["y"][rows[0]] * 1e3)
+        if comparison is not None:
+            a = comparison["axis"]
+            xh = (a["x"] + comparison["xc"]) * 1e3
+            ax.plot(xh, a["p"] * 1e-6, "-", c="0.45", lw=2.5, alpha=0.55, label="half-space p")
+            ax.plot(xh, a["q_x"] * 1e-6, "-", c="tab:purple", lw=2.5, alpha=0.55,
+                    label="half-space q_x (F_x / F_N %.3f)" % (comparison["fx_hs"] / comparison["Fn"]))
+            title += "\nRMS difference: p %.3f p0, q_x %.3f f p0" % (comparison["rms_p"], comparison["rms_q"])
         ax.set_xlabel("x [mm] (rolling direction ->)")
         ax.set_ylabel("[MPa]")
-        ax.set_title("along y = %.3g mm at instant t" % (p["y"][rows[0]] * 1e3))
+        ax.set_title(title, fontsize=10)
         zoom(ax, p, 0.006, equal=False)
         ax.legend(fontsize=8)
         rep.save(fig, "fig04_pressure_shear.png",
-                 "Pressure and surface shear stress along the longitudinal axis (paper Figs. 4, 11, 15)")
+                 "Pressure and surface shear stress along the longitudinal axis (paper Figs. 4, 11, 15), "
+                 "with the half-space solution of the same F_N and F_x")
 
         # Figs. 5-7: adhesion/slip maps by eq. 5 and eq. 6
         fig, axes = plt.subplots(2, 3, figsize=(13, 8), squeeze=False)
@@ -299,12 +282,18 @@ def plot_run(run, other, out):
             rows = axis_rows(q)
             c = q["in_contact"][rows] > 0
             ax.plot(q["x"][rows][c] * 1e3, q["slip_velocity"][rows][c], style, marker="o", ms=3, label=instant)
+        if comparison is not None:
+            a = comparison["axis"]
+            c = a["contact"]
+            ax.plot((a["x"][c] + comparison["xc"]) * 1e3, a["s"][c], "-", c="k", lw=2.5, alpha=0.45,
+                    label="half-space |s| at t")
         ax.axhline(0.05, c="0.6", lw=0.8, label="eq. 6 threshold 0.05 m/s")
         ax.set_xlabel("x [mm]")
         ax.set_ylabel("micro-slip s_n [m/s]")
         ax.set_title("micro-slip of the contact nodes along y = 0")
         ax.legend(fontsize=8)
-        rep.save(fig, "fig10_microslip_axis.png", "Micro-slip along the longitudinal axis (paper Fig. 10)")
+        rep.save(fig, "fig10_microslip_axis.png",
+                 "Micro-slip along the longitudinal axis (paper Fig. 10), with the half-space slip velocity")
 
     # Figs. 8, 9: velocity histories and their spectra
     probes = [(os.path.join(run, "probe.csv"), "rail-top node at O"),
@@ -413,11 +402,12 @@ def plot_run(run, other, out):
                 ax.set_xlabel("time [ms]")
         rep.save(fig, "histories.png", "Time histories: forces, mu_a, energies, node counts")
 
-    write_html(rep, run, other, prm, names, stats)
-    return rep
+    write_html(rep, run, other, prm, names, stats,
+               hc.summary_lines(comparison) if comparison is not None else [hs_missing])
+    return rep, comparison, hs_missing
 
 
-def write_html(rep, run, other, prm, names, stats):
+def write_html(rep, run, other, prm, names, stats, hs_lines):
     rows = [("run", run)]
     if other:
         rows.append(("compared with", other))
@@ -447,7 +437,20 @@ def write_html(rep, run, other, prm, names, stats):
     header = ["<h1>wheelrail run report</h1>", "<table border='1' cellpadding='3'>"]
     header += ["<tr><td>%s</td><td>%s</td></tr>" % (html.escape(k), html.escape(str(v))) for k, v in rows]
     header.append("</table>")
+    header.append("<h2>Comparison with the half-space solution</h2><ul>")
+    header += ["<li>%s</li>" % html.escape(line) for line in hs_lines]
+    header.append("</ul>")
     rep.write_page("wheelrail report", header)
+
+
+def shows_half_space(rep, name):
+    """Whether figure @p name has a line labelled 'half-space ...' with finite data."""
+    for n, _, fig in rep.figures:
+        if n == name:
+            return any(line.get_label().startswith("half-space") and len(line.get_xdata()) > 0
+                       and np.isfinite(np.asarray(line.get_ydata(), dtype=float)).all()
+                       for ax in fig.axes for line in ax.get_lines())
+    return False
 
 
 def main():
@@ -455,17 +458,24 @@ def main():
     parser.add_argument("run", help="output directory of a wheelrail run")
     parser.add_argument("other", nargs="?", help="a second run to compare with (Figs. 3, 13)")
     parser.add_argument("--out", help="where the PNG files and report.html go (default RUN/plots)")
+    parser.add_argument("--hs-grid", default="%dx%d" % hc.DEFAULT_GRID,
+                        help="half-space elements NXxNY (NY odd; 0x0: no half-space comparison)")
     parser.add_argument("--check", action="store_true",
                         help="verify that every figure is written and shows finite data")
     args = parser.parse_args()
+    hs_grid = hc.parse_grid(args.hs_grid, none_allowed=True)
+    if hs_grid is None:
+        parser.error("--hs-grid %s: expected NXxNY, NX 4..512, NY odd 3..511, or 0x0" % args.hs_grid)
     for d in [args.run] + ([args.other] if args.other else []):
         if not os.path.isfile(os.path.join(d, "statistics")):
             sys.exit("plot.py: %s is not a wheelrail output directory (no statistics file)" % d)
     out = args.out or os.path.join(args.run, "plots")
     os.makedirs(out, exist_ok=True)
-    rep = plot_run(args.run, args.other, out)
+    rep, comparison, hs_missing = plot_run(args.run, args.other, out, hs_grid)
     for name, caption, _ in rep.figures:
         print("%-30s %s" % (name, caption))
+    for line in hc.summary_lines(comparison) if comparison is not None else [hs_missing]:
+        print(line)
     print("report: %s" % os.path.join(out, "report.html"))
     if args.check:
         expected = ["fig03_contact_nodes.png", "fig04_pressure_shear.png", "fig05_07_adhesion_slip.png",
@@ -474,7 +484,14 @@ def main():
         if args.other:
             expected.append("fig13_force_difference.png")
         made = [n for n, _, _ in rep.figures]
-        rep.exit_with_check(["%s: not made (input missing?)" % n for n in expected if n not in made])
+        problems = ["%s: not made (input missing?)" % n for n in expected if n not in made]
+        if hs_grid[0]:
+            if comparison is None:
+                problems.append(hs_missing)
+            problems += ["%s: no half-space line" % n for n in ["fig04_pressure_shear.png",
+                                                                "fig10_microslip_axis.png"]
+                         if n in made and not shows_half_space(rep, n)]
+        rep.exit_with_check(problems)
 
 
 if __name__ == "__main__":
