@@ -13,9 +13,11 @@
 #                               appended to bench/results.csv, after the machine's
 #                               measured FMA peak and memory bandwidth
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
-#                               directory (and the comparison with a second run) into DIR/plots
+#                               directory (and the comparison with a second run) into DIR/plots,
+#                               with the half-space solution of the patch's load and traction
 #   ./run.sh sweep BASE.prm [options]  traction sweep over mu_n and friction laws with its
-#                               plots (scripts/sweep.py --help)
+#                               plots and the creep curve against the half-space one
+#                               (scripts/sweep.py --help)
 #   ./run.sh build              set-up and build only
 #   ./run.sh format             clang-format (.clang-format, deal.II's style) on every
 #                               tracked C++ file (installs Debian's clang-format)

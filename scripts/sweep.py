@@ -3,7 +3,8 @@
 
 Usage:
     scripts/sweep.py BASE.prm [--mu 0.1,0.2,0.3,0.4,0.5] [--laws constant,exponential]
-                     [--np N] [--out DIR] [--wheelrail PATH] [--plot-only] [--check]
+                     [--np N] [--out DIR] [--wheelrail PATH] [--hs-grid 32x17]
+                     [--plot-only] [--check]
 
 For every friction law and nominal traction coefficient mu_n, a case file
 DIR/LAW_muNN.prm is written (it includes BASE.prm and sets the law, the
@@ -18,19 +19,32 @@ another, on N MPI ranks. Then DIR holds:
                             Coulomb; f_D for the exponential law)
   fig15_shear_axis.png      surface shear stress along y = 0 at instant t for
                             all runs, and the pressure
-  report.html               both figures and the table
+  creep_curve.png           creep curve: F_x / F_N against the rigid creepage
+                            xi, each run's mean mu_a against its mean
+                            creepage (statistics, second half) beside the
+                            half-space curve of each law (Kalker's exact
+                            steady rolling theory, scripts/hs_compare.py, at
+                            the runs' mean F_N, on --hs-grid elements)
+  creep_curve.csv           its data: source (FE or half-space), law, mu_n,
+                            creepage, Fx_over_Fn, and the half-space
+                            halfspace_Fx_over_Fn and
+                            halfspace_slip_area_fraction at that creepage
+  report.html               the figures and the tables
 
 --plot-only skips the runs (re-plots existing output); --check verifies that
-the figures show finite data (exit status 1 if not).
+the figures show finite data and the creep curve the half-space curve (exit
+status 1 if not).
 """
 import argparse
 import html
 import os
 import subprocess
 import sys
+import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import plot  # noqa: E402  (scripts/plot.py: readers and the figure check)
+import hs_compare as hc  # noqa: E402  (scripts/hs_compare.py: readers, the half-space)
+import plot  # noqa: E402  (scripts/plot.py: the figure check)
 
 import matplotlib  # noqa: E402
 
@@ -77,11 +91,76 @@ def run_case(prm, ranks, exe, log):
 
 
 def summarise(run):
-    names, stats = plot.read_statistics(run)
+    names, stats = hc.read_statistics(run)
     half = stats[len(stats) // 2:]
-    fn, fl = plot.column(names, half, "F_N"), plot.column(names, half, "F_L")
-    mu_end = plot.column(names, stats, "mu_a")[-1]
+    fn, fl = hc.column(names, half, "F_N"), hc.column(names, half, "F_L")
+    mu_end = hc.column(names, stats, "mu_a")[-1]
     return fl.mean() / fn.mean(), fn.mean(), mu_end
+
+
+def creep_points(run):
+    """Mean rigid creepage and mean mu_a over the second half of a run."""
+    names, stats = hc.read_statistics(run)
+    half = stats[len(stats) // 2:]
+    return hc.column(names, half, "creepage").mean(), hc.column(names, half, "mu_a").mean()
+
+
+# creepage magnitudes of the half-space curves (up to full slip with SPEC 4's
+# coefficients: Coulomb f 0.5 saturates near |xi| 0.01), and each run's own
+CURVE = [2.5e-4, 5e-4, 1e-3, 2e-3, 3e-3, 4e-3, 5e-3, 6e-3, 8e-3, 1.2e-2, 1.6e-2]
+
+
+def creep_curves(runs, rows, laws, grid):
+    """FE points and half-space curves: ([(law, mu_n, xi, mu_a, hs F_x/F_N,
+    hs slip fraction)], {law: [(xi, F_x/F_N, slip fraction)]}, seconds)."""
+    t0 = time.time()
+    points = [(law, mu) + creep_points(run) for law, mu, run in runs]
+    curves, fe = {}, []
+    for law in laws:
+        sel = [p for p in points if p[0] == law]
+        fn = np.mean([r[3] for r in rows if r[0] == law])
+        prm = hc.read_parameters([run for l, _, run in runs if l == law][0])
+        top = max([CURVE[-1]] + [1.2 * abs(p[2]) for p in sel])
+        xis = set([0.0] + [s * m for m in CURVE + [top] for s in (-1, 1)] + [p[2] for p in sel])
+        curves[law] = hc.creep_curve(prm, fn, sorted(xis), grid)
+        at = {xi: (ratio, slip) for xi, ratio, slip in curves[law]}
+        fe += [p + at[p[2]] for p in sel]
+    return fe, curves, time.time() - t0
+
+
+def write_creep_csv(path, fe, curves):
+    lines = ["source,law,mu_n,creepage,Fx_over_Fn,halfspace_Fx_over_Fn,halfspace_slip_area_fraction"]
+    lines += ["FE,%s,%g,%.6g,%.6g,%.6g,%.6g" % p for p in fe]
+    lines += ["half-space,%s,,%.6g,%.6g,%.6g,%.6g" % (law, xi, ratio, ratio, slip)
+              for law, curve in curves.items() for xi, ratio, slip in curve]
+    with open(path + ".tmp", "w") as f:
+        f.write("\n".join(lines) + "\n")
+    os.replace(path + ".tmp", path)
+
+
+def plot_creep(rep, fe, curves, grid):
+    colours = {"constant": "tab:blue", "exponential": "tab:red"}
+    # the curve on the sides of xi = 0 that the runs reach (driving: xi < 0)
+    braking, driving = any(p[2] > 0 for p in fe), any(p[2] < 0 for p in fe) or not fe
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    for k, (law, curve) in enumerate(curves.items()):
+        shown = [c for c in curve if (c[0] <= 0 and driving) or (c[0] >= 0 and braking)]
+        ax.plot([c[0] * 1e3 for c in shown], [c[1] for c in shown], "-", c=colours[law], lw=2,
+                alpha=0.6, label="half-space, %s law (%d x %d)" % (law, grid[0], grid[1]))
+        sel = [p for p in fe if p[0] == law]
+        ax.plot([p[2] * 1e3 for p in sel], [p[3] for p in sel], "os"[k % 2], c=colours[law], mec="k",
+                label="FE runs, %s law (mean, second half)" % law)
+        for p in sel:
+            ax.annotate("mu_n %g" % p[1], (p[2] * 1e3, p[3]), fontsize=7, color=colours[law],
+                        xytext=(4, (-10, 4)[k % 2]), textcoords="offset points")
+    ax.axhline(0, c="k", lw=0.5)
+    ax.axvline(0, c="k", lw=0.5)
+    ax.set_xlabel("rigid creepage xi [1e-3] (driving: xi < 0)")
+    ax.set_ylabel("F_x / F_N (FE: mu_a)")
+    ax.set_title("creep curve: FE runs and the half-space solution")
+    ax.legend(fontsize=7)
+    rep.save(fig, "creep_curve.png", "Creep curve: F_x / F_N against the rigid creepage, FE runs and "
+             "the half-space solution (Kalker's exact steady rolling theory)")
 
 
 def main():
@@ -93,10 +172,15 @@ def main():
     parser.add_argument("--out", default="results/sweep", help="sweep directory")
     parser.add_argument("--wheelrail", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                             "..", "build", "wheelrail"))
+    parser.add_argument("--hs-grid", default="%dx%d" % hc.DEFAULT_GRID,
+                        help="half-space elements NXxNY of the creep curve (NY odd)")
     parser.add_argument("--plot-only", action="store_true")
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
 
+    hs_grid = hc.parse_grid(args.hs_grid)
+    if hs_grid is None:
+        parser.error("--hs-grid %s: expected NXxNY, NX 4..512, NY odd 3..511" % args.hs_grid)
     mus = [float(m) for m in args.mu.split(",") if m.strip()]
     laws = [l.strip() for l in args.laws.split(",") if l.strip()]
     for law in laws:
@@ -150,14 +234,14 @@ def main():
         for (l, mu, run) in runs:
             if l != law:
                 continue
-            p = plot.read_patch(run, "t")
+            p = hc.read_patch(run, "t")
             if p is None:
                 continue
-            rows_ = plot.axis_rows(p)
+            rows_ = hc.axis_rows(p)
             ax.plot(p["x"][rows_] * 1e3, p["shear_x"][rows_] * 1e-6, "-", marker=".", label="mu_n = %g" % mu)
             last = p
         if last is not None:
-            rows_ = plot.axis_rows(last)
+            rows_ = hc.axis_rows(last)
             ax.plot(last["x"][rows_] * 1e3, last["pressure"][rows_] * 1e-6 * (0.5 if law == "constant" else 0.32),
                     "k:", label="p f (%s)" % ("f = 0.5" if law == "constant" else "f_D"))
             plot.zoom(ax, last, 0.006, equal=False)
@@ -167,19 +251,34 @@ def main():
         ax.legend(fontsize=7)
     rep.save(fig, "fig15_shear_axis.png", "Surface shear stress along the axis for all runs (paper Fig. 15)")
 
+    fe, curves, seconds = creep_curves(runs, rows, laws, hs_grid)
+    creep_csv = os.path.join(args.out, "creep_curve.csv")
+    write_creep_csv(creep_csv, fe, curves)
+    plot_creep(rep, fe, curves, hs_grid)
+    creep_lines = ["creep curve: %s mu_n %g: creepage %.4g, mu_a FE %.4f, half-space %.4f at that "
+                   "creepage (slip-area fraction %.3f)" % p for p in fe]
+    creep_lines.append("half-space creep curves: %d x %d elements, %d creepages per law, %.1f s"
+                       % (hs_grid[0], hs_grid[1], len(next(iter(curves.values()))), seconds))
+
     header = ["<h1>wheelrail traction sweep</h1>", "<p>base case: %s</p>" % html.escape(args.base),
               "<table border='1' cellpadding='3'><tr><th>law</th><th>mu_n</th><th>mean mu_a</th>"
               "<th>mean F_N [kN]</th><th>mu_a at the end</th></tr>"]
     header += ["<tr><td>%s</td><td>%g</td><td>%.4f</td><td>%.2f</td><td>%.4f</td></tr>" %
                (r[0], r[1], r[2], r[3] * 1e-3, r[4]) for r in rows]
     header.append("</table>")
+    header.append("<h2>Creep curve against the half-space solution</h2><ul>")
+    header += ["<li>%s</li>" % html.escape(line) for line in creep_lines]
+    header.append("</ul>")
     page = rep.write_page("wheelrail sweep", header)
 
     for r in rows:
         print("%-12s mu_n %-5g mean mu_a %.4f  mean F_N %.2f kN" % (r[0], r[1], r[2], r[3] * 1e-3))
-    print("sweep: %s, %s" % (csv, page))
+    for line in creep_lines:
+        print(line)
+    print("sweep: %s, %s, %s" % (csv, creep_csv, page))
     if args.check:
-        rep.exit_with_check()
+        rep.exit_with_check([] if plot.shows_half_space(rep, "creep_curve.png")
+                            else ["creep_curve.png: no half-space curve"])
 
 
 if __name__ == "__main__":
