@@ -57,6 +57,28 @@ namespace WheelRail
 
 
 
+    void
+    CheckInput::bound(const std::string &what, const double value, const double limit) const
+    {
+      access.pcout << "  " << what;
+      if (!access.robust_output_only())
+        access.pcout << " " << fmt(value, 2);
+      access.pcout << " (limit " << fmt(limit)
+                   << "), within: " << (std::abs(value) <= limit ? "yes" : "no") << std::endl;
+    }
+
+
+
+    void
+    CheckInput::report(const std::string &what, const double value, const std::string &unit) const
+    {
+      if (!access.robust_output_only())
+        access.pcout << "  " << what << " " << fmt(value, 2) << " " << unit << " (reported)"
+                     << std::endl;
+    }
+
+
+
     const std::map<std::string, Check> &
     checks()
     {

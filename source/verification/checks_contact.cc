@@ -223,18 +223,12 @@ namespace WheelRail
       // the normal load stays at the static load (a wheel rolling into
       // finer cells is pushed up unless the penalty and the surface
       // geometry match: Contact/Penalty stiffness, Mesh/Rolling path cell size)
-      in.access.pcout << "  largest |F_N - static load| / static load over the second half "
-                      << fmt(fn_deviation, 2)
-                      << " (limit 0.05), within: " << (fn_deviation <= 0.05 ? "yes" : "no")
-                      << std::endl
-                      << "  mean F_L / F_N " << fmt(fl / fn, 2)
-                      << " (limit 0.005), within: " << (std::abs(fl / fn) <= 0.005 ? "yes" : "no")
-                      << std::endl
-                      << "  mean trailing longitudinal micro-slip s_x / V " << fmt(creepage, 2)
-                      << " (limit 1e-4), within: " << (std::abs(creepage) <= 1e-4 ? "yes" : "no")
-                      << std::endl
-                      << "  mean trailing micro-slip magnitude s_n " << fmt(slip, 2)
-                      << " m/s (reported)" << std::endl;
+      in.bound("largest |F_N - static load| / static load over the second half",
+               fn_deviation,
+               0.05);
+      in.bound("mean F_L / F_N", fl / fn, 0.005);
+      in.bound("mean trailing longitudinal micro-slip s_x / V", creepage, 1e-4);
+      in.report("mean trailing micro-slip magnitude s_n", slip, "m/s");
     }
 
 

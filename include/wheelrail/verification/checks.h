@@ -39,6 +39,17 @@ namespace WheelRail
              const double       reference,
              const std::string &unit,
              const double       scale) const;
+
+      /** Print one bound: "  WHAT VALUE (limit LIMIT), within: yes" when
+       *  |value| <= limit. A round-off sensitive run's test output leaves the
+       *  value out and keeps the verdict. */
+      void
+      bound(const std::string &what, const double value, const double limit) const;
+
+      /** Print a value that is only reported, not checked ("  WHAT VALUE UNIT
+       *  (reported)"); left out of a round-off sensitive run's test output. */
+      void
+      report(const std::string &what, const double value, const std::string &unit) const;
     };
 
     using Check = std::function<void(const CheckInput &)>;
