@@ -29,10 +29,18 @@ namespace WheelRail
     , bulk_modulus(material.lambda() + 2. / 3. * material.mu())
   {
     if (prm.friction_law != "none")
-      law = FrictionLaw::create(prm.friction_law,
-                                prm.static_coefficient,
-                                prm.dynamic_coefficient,
-                                prm.decay);
+      {
+        law = FrictionLaw::create(prm.friction_law,
+                                  prm.static_coefficient,
+                                  prm.dynamic_coefficient,
+                                  prm.decay);
+        FrictionModel::Options options;
+        options.irreversible_slip_rate = prm.slip_rate == "irreversible";
+        options.relaxation_length      = prm.relaxation_length;
+        options.relaxation_time        = prm.relaxation_time;
+        options.damping_ratio          = prm.tangential_damping;
+        friction                       = std::make_unique<FrictionModel>(*law, options);
+      }
   }
 
 

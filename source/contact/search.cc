@@ -209,6 +209,7 @@ namespace WheelRail
                 pass.slaves[s].in_contact       = false;
                 pass.slaves[s].normal_force     = 0;
                 pass.slaves[s].tangential_force = Tensor<1, dim>();
+                pass.slaves[s].friction         = FrictionModel::Memory();
                 pass.slaves[s].face             = -1;
                 continue;
               }
@@ -241,6 +242,7 @@ namespace WheelRail
             {
               s.face             = -1;
               s.tangential_force = Tensor<1, dim>();
+              s.friction         = FrictionModel::Memory();
             }
       }
     active_nodes.clear();

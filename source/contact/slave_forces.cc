@@ -146,7 +146,6 @@ namespace WheelRail
             // slip increment: the contact point now minus the old contact
             // point on the current master geometry
             Tensor<1, dim> de;
-            Tensor<1, dim> Ft_old;
             if (state.face < 0)
               {
                 // a new contact: the slip of this step is the motion of the
@@ -181,16 +180,19 @@ namespace WheelRail
                                  &node_x[face.node[2]],
                                  &node_x[face.node[3]]}};
                 bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
-                de     = x_new - x_old;
-                Ft_old = state.tangential_force;
+                de = x_new - x_old;
               }
-            Tensor<1, dim> trial = Ft_old - kt * de;
-            trial -= (trial * best_n) * best_n;
-            state.slip_rate        = de / dt;
-            state.slip_velocity    = de.norm() / dt;
-            state.cof              = law->coefficient(state.slip_velocity);
-            state.tangential_force = return_map(
-              trial, state.cof * state.normal_force, kt, state.slipping, state.friction_loss);
+            if (state.face < 0)
+              state.friction = friction->new_contact();
+            const FrictionModel::Result r =
+              friction->step(de, best_n, state.normal_force, kt, state.mass, dt, state.friction);
+            state.slip_rate        = r.slip_rate;
+            state.slip_velocity    = r.slip;
+            state.cof              = r.cof;
+            state.tangential_force = r.force;
+            state.slipping         = r.slipping;
+            state.friction_loss    = r.friction_loss;
+            state.damping_work += r.damping_work;
           }
         else
           {
@@ -229,7 +231,10 @@ namespace WheelRail
     state.slip_rate        = Tensor<1, dim>();
     state.slipping         = false;
     if (advance)
-      state.face = -1;
+      {
+        state.face     = -1;
+        state.friction = FrictionModel::Memory();
+      }
   }
 
 
@@ -337,7 +342,7 @@ namespace WheelRail
         totals.elastic_energy += 0.5 * k * state.gap * state.gap;
         if (law && advance)
           totals.elastic_energy +=
-            0.5 * state.tangential_force.norm_square() / (prm.tangential_factor * k);
+            0.5 * state.friction.elastic_force.norm_square() / (prm.tangential_factor * k);
 
         const Tensor<1, dim> F = state.normal_force * state.normal + state.tangential_force;
         // the force on the first pass's slave body: in the second pass the

@@ -117,6 +117,43 @@ namespace WheelRail
                       "6",
                       Patterns::Double(0, 1e6),
                       "k of the exponential law [s/m], range [0, 1e6].");
+    prm.declare_entry("Slip rate",
+                      "total",
+                      Patterns::Selection("total|irreversible"),
+                      "The slip rate s_n the friction law is evaluated at. "
+                      "'total': |de| / dt, the slave's motion relative to the "
+                      "master material in the step, the elastic rate of the "
+                      "tangential spring included (paper, SPEC 4); "
+                      "'irreversible': that motion minus the spring's elastic "
+                      "increment: 0 in stick, solved with f in slip. A point "
+                      "sticks while its trial force lies within f(0) |F_n|, "
+                      "so with a velocity-weakening law and no relaxation it "
+                      "does not keep steady sliding below f(0), and that "
+                      "sliding is unstable where it exists "
+                      "(doc/friction_regularisation.md): combine it with a "
+                      "relaxation.");
+    prm.declare_entry("Friction relaxation length",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "L [m], range [0, 1]: the local coefficient becomes a "
+                      "state theta that follows the law over the slip "
+                      "distance L, d theta/dt = -(s_n / L + 1 / tau)(theta - "
+                      "f(s_n)) (rate-and-state style memory); 0: no "
+                      "relaxation by slip.");
+    prm.declare_entry("Friction relaxation time",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "tau [s], range [0, 1]: relaxation of the friction "
+                      "state in time (see Friction relaxation length); 0: no "
+                      "relaxation in time. Both 0: f = f(s_n) at once "
+                      "(paper).");
+    prm.declare_entry("Tangential damping",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "Viscous damping of the tangential contact force, a "
+                      "fraction of the critical damping 2 sqrt(k_t m) of the "
+                      "slave node on its tangential spring [-], range [0, 1]; "
+                      "it acts in stick (the cone caps it in slip).");
     prm.leave_subsection();
   }
 
@@ -143,6 +180,10 @@ namespace WheelRail
     static_coefficient        = prm.get_double("Static friction coefficient");
     dynamic_coefficient       = prm.get_double("Dynamic friction coefficient");
     decay                     = prm.get_double("Decay coefficient");
+    slip_rate                 = prm.get("Slip rate");
+    relaxation_length         = prm.get_double("Friction relaxation length");
+    relaxation_time           = prm.get_double("Friction relaxation time");
+    tangential_damping        = prm.get_double("Tangential damping");
     prm.leave_subsection();
     AssertThrow(slave_boundary != master_boundary,
                 ExcMessage("Contact/Slave boundary and Contact/Master boundary must differ."));

@@ -244,6 +244,12 @@ namespace WheelRail
         if (const auto law = contact->friction_law())
           pcout << " (" << law->describe([](const double x) { return fmt(x); }) << ")";
         pcout << std::endl;
+        if (contact->friction_law() && (cp.slip_rate != "total" || cp.relaxation_length > 0 ||
+                                        cp.relaxation_time > 0 || cp.tangential_damping > 0))
+          pcout << "  friction regularisation    : slip rate " << cp.slip_rate
+                << ", relaxation L = " << fmt(cp.relaxation_length * 1e6)
+                << " um, tau = " << fmt(cp.relaxation_time * 1e6) << " us, tangential damping "
+                << fmt(cp.tangential_damping) << std::endl;
       }
     if (parameters.problem.mode == "explicit dynamics")
       pcout << "  steps                        : "

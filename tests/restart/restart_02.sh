@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ctest driver of the resume checks on NP ranks: a bar run stopped after
 # step 100 (restart_02.prm) is resumed with damaged rank files (one flipped
-# byte, cut short, the older format's magic number), with a changed
+# byte, cut short, the older formats' magic numbers), with a changed
 # physics entry and with an End time before the checkpoint: each must be
 # refused naming the file or the entries, with a non-zero exit status and
 # the output directory unchanged; then with a changed End time and
@@ -65,6 +65,12 @@ cp saved/* run/checkpoint/
 printf '2phcrlhw' | dd of=run/checkpoint/rank_0.bin conv=notrunc status=none
 snapshot > before.md5
 refused base.prm "has an older format (no contact-patch window means)"
+cp saved/* run/checkpoint/
+
+# ... and of the format before the friction state of the contact nodes
+printf '3phcrlhw' | dd of=run/checkpoint/rank_0.bin conv=notrunc status=none
+snapshot > before.md5
+refused base.prm "has an older format (no friction state)"
 cp saved/* run/checkpoint/
 snapshot > before.md5
 

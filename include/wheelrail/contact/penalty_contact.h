@@ -31,6 +31,7 @@
 #include <wheelrail/base/checkpoint.h>
 #include <wheelrail/base/stopwatch.h>
 #include <wheelrail/contact/friction_law.h>
+#include <wheelrail/contact/friction_model.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <memory>
@@ -50,18 +51,22 @@ namespace WheelRail
     Tensor<1, dim> normal;             ///< outward normal of the master face
     double         normal_force = 0;   ///< |F_n| [N]
     Tensor<1, dim> tangential_force;   ///< F_t on the slave [N]
-    double         slip_velocity = 0;  ///< micro-slip s_n = |de| / dt [m/s]
-    /** de / dt: the slave's velocity relative to the master material under
-     *  it (elastic spring rate plus slip) [m/s]; |slip_rate| = s_n. */
+    /** Micro-slip s_n, the slip rate the friction law sees [m/s]: |de| / dt
+     *  (paper), or its irreversible part (Contact/Slip rate). */
+    double slip_velocity = 0;
+    /** The slip rate vector: de / dt, the slave's velocity relative to the
+     *  master material under it (elastic spring rate plus slip), or its
+     *  irreversible part [m/s]; |slip_rate| = s_n. */
     Tensor<1, dim> slip_rate;
     double         cof      = 0;     ///< local coefficient of friction
     bool           slipping = false; ///< the return map was active
     /** Friction memory: master face and face coordinates of the contact point. */
-    int        face = -1;
-    double     xi = 0, eta = 0;
-    double     mass = 0;   ///< lumped nodal mass (contact damping) [kg]
-    Point<dim> x_previous; ///< position at the previous step
-    double     gap_previous = 0;
+    int                   face = -1;
+    double                xi = 0, eta = 0;
+    FrictionModel::Memory friction;   ///< tangential spring and friction state
+    double                mass = 0;   ///< lumped nodal mass (contact damping) [kg]
+    Point<dim>            x_previous; ///< position at the previous step
+    double                gap_previous = 0;
     /** Energy dissipated at this node in the last step by friction and by
      *  contact damping [J] (summed in slave order into the totals). */
     double friction_loss = 0;
@@ -462,8 +467,10 @@ namespace WheelRail
     const ContactParameters     &prm;
     MPI_Comm                     mpi_communicator;
     std::unique_ptr<FrictionLaw> law;
-    double                       bulk_modulus;
-    double                       reference_length = 0; ///< h_ref of the 'area' penalty [m]
+    /** The friction step at a slave node (law, slip rate, relaxation). */
+    std::unique_ptr<FrictionModel> friction;
+    double                         bulk_modulus;
+    double                         reference_length = 0; ///< h_ref of the 'area' penalty [m]
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
     // contact nodes: slaves and face corners of all passes (replicated)

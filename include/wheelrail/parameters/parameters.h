@@ -198,6 +198,10 @@ namespace WheelRail
     double             static_coefficient;
     double             dynamic_coefficient;
     double             decay;
+    std::string        slip_rate;          ///< "total" (paper) or "irreversible"
+    double             relaxation_length;  ///< L of the friction state [m], 0: off
+    double             relaxation_time;    ///< tau of the friction state [s], 0: off
+    double             tangential_damping; ///< fraction of critical on k_t [-]
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,125 @@
+/**
+ * @file contact/friction_model.cc
+ * FrictionModel: the slip rate given to the law, the relaxing friction
+ * state, tangential damping and the return to the cone at one contact point.
+ */
+
+#include <wheelrail/contact/friction_model.h>
+
+#include <cmath>
+
+namespace WheelRail
+{
+  FrictionModel::FrictionModel(const FrictionLaw &law, const Options &options)
+    : friction_law(law)
+    , opts(options)
+  {}
+
+
+
+  FrictionModel::Memory
+  FrictionModel::new_contact() const
+  {
+    Memory memory;
+    memory.state = friction_law.coefficient(0.);
+    return memory;
+  }
+
+
+
+  double
+  FrictionModel::irreversible_rate(const double trial_norm,
+                                   const double normal_force,
+                                   const double k_t_dt) const
+  {
+    // g(s) = k_t dt s + F_n f(s) - |trial| is negative at s = 0 (the point
+    // slips) and not negative at s = |trial| / (k_t dt); for a convex
+    // decreasing f it has one root between. Bisection to round-off.
+    double lo = 0, hi = trial_norm / k_t_dt;
+    for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
+      {
+        const double s = 0.5 * (lo + hi);
+        if (k_t_dt * s + normal_force * friction_law.coefficient(s) < trial_norm)
+          lo = s;
+        else
+          hi = s;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+
+
+  FrictionModel::Result
+  FrictionModel::step(const dealii::Tensor<1, 3> &de,
+                      const dealii::Tensor<1, 3> &normal,
+                      const double                normal_force,
+                      const double                k_t,
+                      const double                mass,
+                      const double                dt,
+                      Memory                     &memory) const
+  {
+    Result result;
+
+    // the elastic trial and the damper, in the tangent plane
+    dealii::Tensor<1, 3> elastic = memory.elastic_force - k_t * de;
+    elastic -= (elastic * normal) * normal;
+    dealii::Tensor<1, 3> trial = elastic;
+    double               c_t   = 0;
+    if (opts.damping_ratio > 0)
+      {
+        c_t                          = 2. * opts.damping_ratio * std::sqrt(k_t * mass);
+        dealii::Tensor<1, 3> viscous = (-c_t / dt) * de;
+        viscous -= (viscous * normal) * normal;
+        trial += viscous;
+      }
+    const double trial_norm = trial.norm();
+
+    // the slip rate the law sees and the coefficient of the cone
+    double slip = 0, cof = 0;
+    if (opts.relaxes())
+      {
+        const double theta = memory.state;
+        if (opts.irreversible_slip_rate)
+          slip = std::max(trial_norm - theta * normal_force, 0.) / (k_t * dt);
+        else
+          slip = de.norm() / dt;
+        const double f_s  = friction_law.coefficient(slip);
+        const double rate = (opts.relaxation_length > 0 ? slip / opts.relaxation_length : 0.) +
+                            (opts.relaxation_time > 0 ? 1. / opts.relaxation_time : 0.);
+        cof          = f_s + (theta - f_s) * std::exp(-rate * dt);
+        memory.state = cof;
+      }
+    else if (opts.irreversible_slip_rate)
+      {
+        const double f_0 = friction_law.coefficient(0.);
+        slip             = trial_norm <= f_0 * normal_force ?
+                             0. :
+                             irreversible_rate(trial_norm, normal_force, k_t * dt);
+        cof              = friction_law.coefficient(slip);
+      }
+    else
+      {
+        slip = de.norm() / dt;
+        cof  = friction_law.coefficient(slip);
+      }
+
+    result.force =
+      return_map(trial, cof * normal_force, k_t, result.slipping, result.friction_loss);
+    if (result.slipping)
+      memory.elastic_force = result.force;
+    else
+      {
+        memory.elastic_force = elastic;
+        if (c_t > 0)
+          result.damping_work = (trial - elastic).norm_square() * dt / c_t;
+      }
+
+    result.cof  = cof;
+    result.slip = slip;
+    if (opts.irreversible_slip_rate)
+      result.slip_rate = trial_norm > 0 ? (-slip / trial_norm) * trial : dealii::Tensor<1, 3>();
+    else
+      result.slip_rate = de / dt;
+    return result;
+  }
+} // namespace WheelRail
