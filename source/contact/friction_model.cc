@@ -72,7 +72,9 @@ namespace WheelRail
         viscous -= (viscous * normal) * normal;
         trial += viscous;
       }
-    const double trial_norm = trial.norm();
+    // the spring's trial beyond the cone is the irreversible slip; the
+    // damper's force is not slip
+    const double elastic_norm = elastic.norm();
 
     // the slip rate the law sees and the coefficient of the cone
     double slip = 0, cof = 0;
@@ -80,7 +82,7 @@ namespace WheelRail
       {
         const double theta = memory.state;
         if (opts.irreversible_slip_rate)
-          slip = std::max(trial_norm - theta * normal_force, 0.) / (k_t * dt);
+          slip = std::max(elastic_norm - theta * normal_force, 0.) / (k_t * dt);
         else
           slip = de.norm() / dt;
         const double f_s  = friction_law.coefficient(slip);
@@ -92,9 +94,9 @@ namespace WheelRail
     else if (opts.irreversible_slip_rate)
       {
         const double f_0 = friction_law.coefficient(0.);
-        slip             = trial_norm <= f_0 * normal_force ?
+        slip             = elastic_norm <= f_0 * normal_force ?
                              0. :
-                             irreversible_rate(trial_norm, normal_force, k_t * dt);
+                             irreversible_rate(elastic_norm, normal_force, k_t * dt);
         cof              = friction_law.coefficient(slip);
       }
     else
@@ -117,7 +119,7 @@ namespace WheelRail
     result.cof  = cof;
     result.slip = slip;
     if (opts.irreversible_slip_rate)
-      result.slip_rate = trial_norm > 0 ? (-slip / trial_norm) * trial : dealii::Tensor<1, 3>();
+      result.slip_rate = slip > 0 ? (-slip / elastic_norm) * elastic : dealii::Tensor<1, 3>();
     else
       result.slip_rate = de / dt;
     return result;

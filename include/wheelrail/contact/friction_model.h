@@ -25,10 +25,12 @@ namespace WheelRail
    * f(s) |F_n|. The options, each off by default:
    *
    * - Irreversible slip rate: s is the slip increment minus the elastic
-   *   increment of the tangential spring, |trial| - f(s) |F_n| over k_t dt
-   *   in slip and 0 in stick; f(s) and s are solved together (a scalar root,
-   *   unique for a convex decreasing law such as eq. 1). In adhesion the
-   *   spring's own oscillation no longer reads as slip.
+   *   increment of the tangential spring: in slip the spring's trial
+   *   beyond the cone, (|F_e - k_t de| - f |F_n|) / (k_t dt) (the damper's
+   *   force is not slip), in stick 0. Without relaxation f(s) and s are
+   *   solved together (a scalar root, unique for a convex decreasing law
+   *   such as eq. 1). In adhesion the spring's own oscillation no longer
+   *   reads as slip.
    * - Relaxation: the coefficient is a state theta that follows the law
    *   with d theta / dt = -(s / L + 1 / tau) (theta - f(s)), integrated
    *   exactly over the step with s of the step; the cone is theta |F_n|.
