@@ -14,6 +14,9 @@ creep curve) and convergence_study.py (the mesh and time-step study):
                             solution along y = 0, the RMS differences of
                             pressure / p0 and shear_x / (f p0) there, the
                             slip-area fractions
+  slip_halves               eq. 6 slip shares and median s_n of the leading
+                            and trailing halves of a patch (FE) or of the
+                            half-space solution along y = 0
   creep_curve               half-space F_x / F_N against the creepage
 
 The half-space case takes the run's wheel radius (R_x), rail profile radius
@@ -239,6 +242,30 @@ def compare_patch(run, instant="t", grid=DEFAULT_GRID):
                 rms_p=rms_p, rms_q=rms_q, axis=axis, hertz=hertz, sol=sol, grid=g, note=note,
                 fe=dict(x=x_fe, p=P["pressure"][rows], q_x=P["shear_x"][rows]),
                 seconds=time.time() - t0, law=law_text, instant=instant)
+
+
+def slip_halves(run, r=None, instant="t"):
+    """The slip state of the leading and trailing halves (in x, about the
+    middle of the contact's extent) of the patch of RUN at @p instant: dict
+    with the eq. 6 slip share and the median s_n of the nodes in contact in
+    each half (lead_eq6, trail_eq6, lead_s, trail_s), the eq. 5 slip share
+    of all of them (eq5) and, given the compare_patch() result @p r, the
+    half-space's median slip velocity of each half along y = 0 (hs_lead_s,
+    hs_trail_s)."""
+    P = read_patch(run, instant)
+    c = P["in_contact"] > 0
+    x, s, share = P["x"][c], P["slip_velocity"][c], P["slip_share"][c]
+    lead = x > 0.5 * (x.max() + x.min())
+    out = dict(lead_eq6=share[lead].mean(), trail_eq6=share[~lead].mean(),
+               lead_s=float(np.median(s[lead])), trail_s=float(np.median(s[~lead])),
+               eq5=1. - P["adhesion_share"][c].mean())
+    if r is not None:
+        a = r["axis"]
+        ca = a["contact"] > 0
+        xa, sa = a["x"][ca], a["s"][ca]
+        la = xa > 0.5 * (xa.max() + xa.min())
+        out.update(hs_lead_s=float(np.median(sa[la])), hs_trail_s=float(np.median(sa[~la])))
+    return out
 
 
 def summary_lines(r):
