@@ -28,18 +28,18 @@ namespace WheelRail
 
 
   double
-  FrictionModel::irreversible_rate(const double trial_norm,
+  FrictionModel::irreversible_rate(const double elastic_norm,
                                    const double normal_force,
                                    const double k_t_dt) const
   {
-    // g(s) = k_t dt s + F_n f(s) - |trial| is negative at s = 0 (the point
-    // slips) and not negative at s = |trial| / (k_t dt); for a convex
-    // decreasing f it has one root between. Bisection to round-off.
-    double lo = 0, hi = trial_norm / k_t_dt;
+    // g(s) = k_t dt s + F_n f(s) - |F_e - k_t de| is negative at s = 0 (the
+    // point slips) and not negative at s = |F_e - k_t de| / (k_t dt); for a
+    // convex decreasing f it has one root between. Bisection to round-off.
+    double lo = 0, hi = elastic_norm / k_t_dt;
     for (unsigned int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i)
       {
         const double s = 0.5 * (lo + hi);
-        if (k_t_dt * s + normal_force * friction_law.coefficient(s) < trial_norm)
+        if (k_t_dt * s + normal_force * friction_law.coefficient(s) < elastic_norm)
           lo = s;
         else
           hi = s;

@@ -209,7 +209,6 @@ namespace WheelRail
                 pass.slaves[s].in_contact       = false;
                 pass.slaves[s].normal_force     = 0;
                 pass.slaves[s].tangential_force = Tensor<1, dim>();
-                pass.slaves[s].friction         = FrictionModel::Memory();
                 pass.slaves[s].face             = -1;
                 continue;
               }
@@ -242,7 +241,6 @@ namespace WheelRail
             {
               s.face             = -1;
               s.tangential_force = Tensor<1, dim>();
-              s.friction         = FrictionModel::Memory();
             }
       }
     active_nodes.clear();

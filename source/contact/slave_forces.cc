@@ -148,9 +148,11 @@ namespace WheelRail
             Tensor<1, dim> de;
             if (state.face < 0)
               {
-                // a new contact: the slip of this step is the motion of the
-                // slave relative to the face, from its previous position
-                // projected onto the same face
+                // a new contact: the friction memory starts afresh, and the
+                // slip of this step is the motion of the slave relative to
+                // the face, from its previous position projected onto the
+                // same face
+                state.friction = friction->new_contact();
                 BilinearFace bn{{&node_x[face.node[0]],
                                  &node_x[face.node[1]],
                                  &node_x[face.node[2]],
@@ -182,8 +184,6 @@ namespace WheelRail
                 bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
                 de = x_new - x_old;
               }
-            if (state.face < 0)
-              state.friction = friction->new_contact();
             const FrictionModel::Result r =
               friction->step(de, best_n, state.normal_force, kt, state.mass, dt, state.friction);
             state.slip_rate        = r.slip_rate;
@@ -231,10 +231,7 @@ namespace WheelRail
     state.slip_rate        = Tensor<1, dim>();
     state.slipping         = false;
     if (advance)
-      {
-        state.face     = -1;
-        state.friction = FrictionModel::Memory();
-      }
+      state.face = -1;
   }
 
 

@@ -116,10 +116,10 @@ namespace WheelRail
     }
 
   private:
-    /** The irreversible slip rate s >= 0 with @p k_t dt s + F_n f(s) =
-     *  |trial| (0 in stick). */
+    /** The irreversible slip rate s > 0 of a slipping point with
+     *  k_t dt s + F_n f(s) = |F_e - k_t de| = @p elastic_norm. */
     double
-    irreversible_rate(const double trial_norm,
+    irreversible_rate(const double elastic_norm,
                       const double normal_force,
                       const double k_t_dt) const;
 
