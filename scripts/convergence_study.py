@@ -22,10 +22,12 @@ scripts/hs_compare.py, which plot.py uses too):
 
 Usage:
   convergence_study.py --run --base CASE.prm --work DIR [--np 2]
-        runs CASE.prm at the variants of --variants (LABEL:h:dt[:xi_0], default
-        the h 1.32 / 0.66 / 0.33 mm at dt = 2.6e-8 s and h 0.66 mm at dt / 2;
-        xi_0, if given, replaces the case's Wheelset/Initial creepage)
-        into DIR/LABEL (an existing DIR/LABEL/patch_t.csv is reused)
+        runs CASE.prm at the variants of --variants (LABEL:h:dt[:xi_0[:SET...]],
+        default the h 1.32 / 0.66 / 0.33 mm at dt = 2.6e-8 s and h 0.66 mm at
+        dt / 2; xi_0, if given and not empty, replaces the case's
+        Wheelset/Initial creepage; each SET, Subsection/Entry=value, sets one
+        more parameter) into DIR/LABEL (an existing DIR/LABEL/patch_t.csv is
+        reused)
   convergence_study.py --work DIR [--variants ...] [--markdown FILE] [--figure PNG]
         compares the runs found there
   convergence_study.py --work DIR --variants ... --check p0=0.05 rms_q=0.1 ...
@@ -118,10 +120,38 @@ def check(results, limits):
     return passed
 
 
+def parse_variants(texts):
+    """(label, h, dt, xi_0 or None, [(path, value), ...]) of each
+    LABEL:h:dt[:xi_0[:Subsection/Entry=value...]]; ValueError if malformed."""
+    variants = []
+    for v in texts:
+        fields = v.split(":")
+        if len(fields) < 3 or not all(fields[:3]):
+            raise ValueError(f"variant '{v}': expected LABEL:h:dt[:xi_0[:Subsection/Entry=value...]]")
+        sets = []
+        for item in fields[4:]:
+            path, eq, value = item.partition("=")
+            if not eq or "/" not in path or not value.strip():
+                raise ValueError(f"variant '{v}': '{item}' is not Subsection/Entry=value")
+            sets.append((path.strip(), value.strip()))
+        xi0 = fields[3] if len(fields) > 3 and fields[3] else None
+        variants.append((fields[0], fields[1], fields[2], xi0, sets))
+    return variants
+
+
+def prm_entry(path, value):
+    """The parameter-file lines setting Subsection/.../Entry to value."""
+    *sections, entry = path.split("/")
+    lines = [" " * (2 * i) + f"subsection {s}" for i, s in enumerate(sections)]
+    lines.append(" " * (2 * len(sections)) + f"set {entry} = {value}")
+    lines += [" " * (2 * i) + "end" for i in reversed(range(len(sections)))]
+    return "\n".join(lines) + "\n"
+
+
 def run_variants(args, variants):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     binary = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "wheelrail")
-    for label, h, dt, xi0 in variants:
+    for label, h, dt, xi0, sets in variants:
         out = os.path.abspath(os.path.join(args.work, label))
         if os.path.exists(os.path.join(out, "patch_t.csv")):
             print(f"{label}: reusing {out}")
@@ -136,8 +166,11 @@ def run_variants(args, variants):
                     f"subsection Time integration\n  set Time step = {dt}\nend\n")
             if xi0 is not None:
                 f.write(f"subsection Wheelset\n  set Initial creepage = {xi0}\nend\n")
+            for path, value in sets:
+                f.write(prm_entry(path, value))
         print(f"{label}: running h = {h} m, dt = {dt} s"
-              + (f", xi_0 = {xi0}" if xi0 is not None else ""), flush=True)
+              + (f", xi_0 = {xi0}" if xi0 is not None else "")
+              + "".join(f", {path} = {value}" for path, value in sets), flush=True)
         with open(os.path.join(out, "screen.log"), "w") as log:
             subprocess.run(["mpirun", "-np", str(args.np), binary, prm], stdout=log,
                            stderr=subprocess.STDOUT, env=env, check=True)
@@ -148,7 +181,7 @@ def main():
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
     parser.add_argument("--variants", nargs="+", default=DEFAULT_VARIANTS,
-                        help="LABEL:h:dt[:xi_0], h and dt in m and s")
+                        help="LABEL:h:dt[:xi_0[:Subsection/Entry=value...]], h and dt in m and s")
     parser.add_argument("--run", action="store_true", help="run the variants that are missing")
     parser.add_argument("--base", help="--run: the case file")
     parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
@@ -159,19 +192,17 @@ def main():
     parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
                         help="limits of the errors (names: " + ", ".join(CHECKS) + ")")
     args = parser.parse_args()
-    variants = []
-    for v in args.variants:
-        fields = v.split(":")
-        if len(fields) not in (3, 4):
-            parser.error(f"variant '{v}': expected LABEL:h:dt or LABEL:h:dt:xi_0")
-        variants.append((fields[0], fields[1], fields[2], fields[3] if len(fields) == 4 else None))
+    try:
+        variants = parse_variants(args.variants)
+    except ValueError as e:
+        parser.error(str(e))
     if args.run:
         if not args.base:
             parser.error("--run needs --base")
         run_variants(args, variants)
 
     results = []
-    for label, _, _, _ in variants:
+    for label, *_ in variants:
         d = os.path.join(args.work, label)
         if not os.path.exists(os.path.join(d, "patch_t.csv")):
             print(f"{label}: no {d}/patch_t.csv, left out")

@@ -21,7 +21,7 @@ relative to the rail surface, s = V (xi - du_x/dx) in x.
 
 --check NAME runs a verification (fixed settings, independent of the other
 options) and exits with status 1 if it fails: hertz, carter, c11, fullslip,
-exponential or all. See doc/halfspace.md.
+exponential, memory (the relaxing friction state) or all. See doc/halfspace.md.
 """
 import argparse
 import math
@@ -47,8 +47,12 @@ def moduli(E, nu):
     return E / (2.0 * (1.0 - nu * nu)), E / (2.0 * (1.0 + nu))
 
 
-def make_law(name, f, f_s, f_d, k):
-    return bem.Coulomb(f) if name == "coulomb" else bem.Exponential(f_s, f_d, k)
+def make_law(name, f, f_s, f_d, k, length=0.0, time=0.0):
+    """The law; the exponential one with a relaxing state if length or time > 0."""
+    if name == "coulomb":
+        return bem.Coulomb(f)
+    law = bem.Exponential(f_s, f_d, k)
+    return bem.RelaxingState(law, length, time) if length > 0 or time > 0 else law
 
 
 def elliptic_case(nx, ny, margin, load, rx, ry, E, nu):
@@ -115,7 +119,8 @@ def write_csv(path, header, rows):
 
 
 def run(args):
-    law = make_law(args.law, args.f, args.f_s, args.f_d, args.k)
+    law = make_law(args.law, args.f, args.f_s, args.f_d, args.k, args.relaxation_length,
+                   args.relaxation_time)
     e_star, g_mod = moduli(args.E, args.nu)
     t0 = time.time()
     if args.line:
@@ -331,8 +336,52 @@ def check_exponential():
     return ok
 
 
+def check_memory():
+    """The relaxing state: its limits and its transport equation."""
+    print("memory: the exponential law with a state relaxing over the slip distance L, xi -0.003, "
+          "grid 16 x 17")
+    grid, p, *_ = elliptic_case(16, 17, 1.1, SPEC["load"], SPEC["rx"], SPEC["ry"],
+                                SPEC["E"], SPEC["nu"])
+    load = p.sum() * grid.dA
+    V, creep = SPEC["speed"], [-0.003, 0.0]
+    law = bem.Exponential(SPEC["f_s"], SPEC["f_d"], SPEC["k"])
+
+    def ratio(sol):
+        return sol["q"][0].sum() * grid.dA / load
+
+    plain = ratio(bem.solve_rolling(grid, p, creep, law, V))
+    static = ratio(bem.solve_rolling(grid, p, creep, bem.Coulomb(SPEC["f_s"]), V))
+    ok = True
+    # L far below the slip distance over an element (s dx / V, 1e-7 to 1e-5 m in the
+    # slip zone): the law itself, to O(L)
+    short = ratio(bem.solve_rolling(grid, p, creep, bem.RelaxingState(law, 1e-7, 0.0), V))
+    # L far beyond the patch's slip distance: theta stays at f(0) = f_S, Coulomb f_S
+    long_ = ratio(bem.solve_rolling(grid, p, creep, bem.RelaxingState(law, 1e3, 0.0), V))
+    print("  F_x/F_N: L 1e-7 m %.5f, the law %.5f; L 1e3 m %.7f, Coulomb f_S %.7f"
+          % (short, plain, long_, static))
+    ok &= abs(short - plain) < 1e-4 and abs(long_ - static) < 1e-7
+    previous = plain
+    for length in (5e-6, 1e-5, 2e-5):
+        rl = bem.RelaxingState(law, length, 0.0)
+        sol = bem.solve_rolling(grid, p, creep, rl, V)
+        c = sol["contact"]
+        slipping = c & ~sol["stick"]
+        s = V * np.linalg.norm(sol["W"], axis=0)
+        q = np.linalg.norm(sol["q"], axis=0)
+        # |q| = theta p in slip, theta the state transported for the solution's own s
+        bound_err = np.abs(q - rl.along(s, c, grid.dx, V) * p)[slipping].max() / p.max()
+        r = ratio(sol)
+        print("  L %.0e m: F_x/F_N %.5f, slip-area fraction %.3f, max||q| - theta(s) p| / p0 %.1e, "
+              "%d iterations, residual max|f_new - f| %.1e"
+              % (length, r, slipping.sum() / c.sum(), bound_err, sol["iterations"], sol["f_residual"]))
+        ok &= bound_err < 1e-8 and sol["f_residual"] < 1e-9 and r > previous
+        previous = r
+    print("  limits of L, |q| = theta p, F_x growing with L: %s" % ("ok" if ok else "FAILED"))
+    return ok
+
+
 CHECKS = dict(hertz=check_hertz, carter=check_carter, c11=check_c11, fullslip=check_fullslip,
-              exponential=check_exponential)
+              exponential=check_exponential, memory=check_memory)
 
 
 # ----------------------------------------------------------------------------
@@ -383,6 +432,11 @@ def parse(argv):
                    "dynamic coefficient, 0..f_S [default 0.32]")
     g.add_argument("--k", type=float, default=SPEC["k"], help="exponential: decay [s/m], >= 0 "
                    "[default 6]")
+    g.add_argument("--relaxation-length", type=float, default=0.0, help="exponential: the local "
+                   "coefficient relaxes towards f(s) over this slip distance [m], 0..1 (wheelrail's "
+                   "Contact/Friction relaxation length) [default 0: off]")
+    g.add_argument("--relaxation-time", type=float, default=0.0, help="exponential: ... and over "
+                   "this time [s], 0..1 [default 0: off]")
     g = ap.add_argument_group("output and checks")
     g.add_argument("--out", default=None, help="directory for the CSV files (created)")
     g.add_argument("--check", choices=sorted(CHECKS) + ["all"], default=None,
@@ -392,7 +446,9 @@ def parse(argv):
               ("--margin", args.margin, 1.01, 5.0), ("--nu", args.nu, 0.0, 0.49),
               ("--creepage", args.creepage, -1.0, 1.0), ("--eta", args.eta, -1.0, 1.0),
               ("--f", args.f, 1e-6, 2.0), ("--fS", args.f_s, 1e-6, 2.0),
-              ("--fD", args.f_d, 1e-6, 2.0), ("--k", args.k, 0.0, 1e6)]
+              ("--fD", args.f_d, 1e-6, 2.0), ("--k", args.k, 0.0, 1e6),
+              ("--relaxation-length", args.relaxation_length, 0.0, 1.0),
+              ("--relaxation-time", args.relaxation_time, 0.0, 1.0)]
     for name, value, lo, hi in limits:
         if not lo <= value <= hi or value != value:
             raise InputError("%s = %g is outside [%g, %g]" % (name, value, lo, hi))

@@ -307,6 +307,45 @@ class Exponential:
         return self.f_d + (self.f_s - self.f_d) * np.exp(-self.k * np.abs(s))
 
 
+class RelaxingState:
+    """A law with a friction state (wheelrail's Friction relaxation length L
+    and time tau): the local coefficient theta of a material point follows
+    d theta/dt = -(|s| / L + 1 / tau)(theta - f(|s|)), f the underlying law,
+    and starts at f(0) where the point comes into contact. In steady rolling
+    the points cross the patch at the speed V from the leading edge (x > 0)
+    backwards, so theta is integrated along x, exactly over each element for
+    the element's own s: the element's value is theta at its centre. L or
+    tau zero: that part of the relaxation is off (both zero: the law)."""
+    velocity_dependent = True
+
+    def __init__(self, law, length, time):
+        if length < 0 or time < 0:
+            raise ValueError("relaxation length and time must not be negative")
+        self.law, self.length, self.time = law, length, time
+        self.f_static = law.f_static
+
+    def __call__(self, s):
+        return self.law(s)
+
+    def along(self, s, contact, dx, speed):
+        """theta of each element, for the slip velocities s [m/s] (grid
+        shape, axis 0 along x), the contact mask and the element length dx."""
+        if self.length == 0 and self.time == 0:
+            return self.law(s)
+        fresh = float(self.law(np.zeros(1))[0])
+        theta = np.zeros(s.shape)
+        state = np.full(s.shape[1:], fresh)
+        for i in reversed(range(s.shape[0])):
+            target = self.law(s[i])
+            rate = (np.abs(s[i]) / self.length if self.length > 0 else 0.0) \
+                + (1.0 / self.time if self.time > 0 else 0.0)
+            decay = np.exp(-rate * 0.5 * dx / speed)
+            centre = target + (state - target) * decay
+            theta[i] = np.where(contact[i], centre, 0.0)
+            state = np.where(contact[i], target + (centre - target) * decay, fresh)
+        return theta
+
+
 class ConvergenceError(RuntimeError):
     pass
 
@@ -407,7 +446,8 @@ def anderson(history, beta):
 
 def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, start=None):
     """Steady rolling at given creepages; f from the law at the local slip
-    velocity V |W| (fixed point with under-relaxation when it depends on it).
+    velocity V |W| (a RelaxingState law: its state transported along x)
+    (fixed point with under-relaxation when it depends on it).
 
     Without start (q, stick mask, f) the iteration begins in the all-stick
     state with f = f_S everywhere and so follows the branch reached from
@@ -426,7 +466,9 @@ def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, s
     history, it = [], 0
     for it in range(1, maxit + 1):
         q, W, stick, n_tang = tang(grid, f * p, creep, q, stick)
-        f_new = np.where(contact, law(speed * np.linalg.norm(W, axis=0)), 0.0)
+        s = speed * np.linalg.norm(W, axis=0)
+        theta = law.along(s, contact, grid.dx, speed) if hasattr(law, "along") else law(s)
+        f_new = np.where(contact, theta, 0.0)
         res = np.abs(f_new - f)[contact].max()
         history.append(res)
         if not law.velocity_dependent or res < ftol:

@@ -14,7 +14,7 @@ creep curve) and convergence_study.py (the mesh and time-step study):
                             solution along y = 0, the RMS differences of
                             pressure / p0 and shear_x / (f p0) there, the
                             slip-area fractions
-  slip_halves               eq. 6 slip shares and median s_n of the leading
+  slip_halves               eq. 6 slip shares and mean s_n of the leading
                             and trailing halves of a patch (FE) or of the
                             half-space solution along y = 0
   creep_curve               half-space F_x / F_N against the creepage
@@ -153,8 +153,13 @@ def law_of(prm):
     f_s = float(prm["Contact/Static friction coefficient"])
     f_d = float(prm["Contact/Dynamic friction coefficient"])
     k = float(prm["Contact/Decay coefficient"])
-    return (hs.make_law("exponential", 0, f_s, f_d, k), f_s,
-            "exponential f_S = %g, f_D = %g, k = %g s/m" % (f_s, f_d, k))
+    # the friction state's relaxation (absent from the parameters of older runs)
+    length = float(prm.get("Contact/Friction relaxation length", 0))
+    time = float(prm.get("Contact/Friction relaxation time", 0))
+    text = "exponential f_S = %g, f_D = %g, k = %g s/m" % (f_s, f_d, k)
+    if length > 0 or time > 0:
+        text += ", state relaxing over L = %g m, tau = %g s" % (length, time)
+    return hs.make_law("exponential", 0, f_s, f_d, k, length, time), f_s, text
 
 
 def normal_case(prm, Fn, grid=DEFAULT_GRID):
@@ -247,24 +252,27 @@ def compare_patch(run, instant="t", grid=DEFAULT_GRID):
 def slip_halves(run, r=None, instant="t"):
     """The slip state of the leading and trailing halves (in x, about the
     middle of the contact's extent) of the patch of RUN at @p instant: dict
-    with the eq. 6 slip share and the median s_n of the nodes in contact in
-    each half (lead_eq6, trail_eq6, lead_s, trail_s), the eq. 5 slip share
-    of all of them (eq5) and, given the compare_patch() result @p r, the
-    half-space's median slip velocity of each half along y = 0 (hs_lead_s,
-    hs_trail_s)."""
+    with the eq. 6 slip share of the nodes in contact in each half (lead_eq6,
+    trail_eq6), the eq. 5 slip share of all of them (eq5), the mean s_n of
+    the nodes in contact along y = 0 in each half (lead_s, trail_s) and,
+    given the compare_patch() result @p r, the half-space's mean slip
+    velocity of each half along y = 0 (hs_lead_s, hs_trail_s)."""
     P = read_patch(run, instant)
     c = P["in_contact"] > 0
-    x, s, share = P["x"][c], P["slip_velocity"][c], P["slip_share"][c]
+    x, share = P["x"][c], P["slip_share"][c]
     lead = x > 0.5 * (x.max() + x.min())
+    rows = axis_rows(P)
+    rows = rows[c[rows]]
+    xr, sr = P["x"][rows], P["slip_velocity"][rows]
+    lr = xr > 0.5 * (xr.max() + xr.min())
     out = dict(lead_eq6=share[lead].mean(), trail_eq6=share[~lead].mean(),
-               lead_s=float(np.median(s[lead])), trail_s=float(np.median(s[~lead])),
-               eq5=1. - P["adhesion_share"][c].mean())
+               lead_s=sr[lr].mean(), trail_s=sr[~lr].mean(), eq5=1. - P["adhesion_share"][c].mean())
     if r is not None:
         a = r["axis"]
         ca = a["contact"] > 0
         xa, sa = a["x"][ca], a["s"][ca]
         la = xa > 0.5 * (xa.max() + xa.min())
-        out.update(hs_lead_s=float(np.median(sa[la])), hs_trail_s=float(np.median(sa[~la])))
+        out.update(hs_lead_s=sa[la].mean(), hs_trail_s=sa[~la].mean())
     return out
 
 

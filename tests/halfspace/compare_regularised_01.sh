@@ -6,9 +6,13 @@
 # instantaneous law does not (eq. 6 slips 92 % of the leading half there):
 # a leading adhesion zone by eq. 6, eq. 5 and eq. 6 agreeing, and slip area
 # and trailing slip velocity near the half-space solution of the same law
-# at the patch's F_x / F_N. Measured 0.04, 0.32 / 0.32, 0.32 / 0.36 and
-# 0.19 / 0.17 m/s (2026-11-24); the limits leave room for the default
-# case's soft interface (SF 0.1 one-pass) and for round-off between hosts.
+# (its state relaxing over the same L) at the patch's F_x / F_N. Measured
+# 0.04, 0.32 / 0.32, 0.32 / 0.31 and, as the mean along y = 0, 0.17 / 0.12
+# m/s (2026-11-25). The limits leave room for round-off between hosts and
+# for the default case's soft interface (SF 0.1 one-pass): it needs a
+# creepage of -3.07e-3 for the F_x that the half-space transmits at
+# -2.20e-3, and the trailing slip velocity is higher by about that ratio.
+# compare_exponential_01 checks the same law on the stiff interface.
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
@@ -34,7 +38,7 @@ print("\n".join(h.summary_lines(r)))
 checks = [("eq. 6 slip share of the leading half", s["lead_eq6"], 0.15),
           ("eq. 5 slip share - eq. 6 slip share", abs(s["eq5"] - 0.5 * (s["lead_eq6"] + s["trail_eq6"])), 0.06),
           ("slip-area fraction FE - half-space", abs(r["slip_fe"] - r["slip_hs"]), 0.10),
-          ("trailing median s_n FE / half-space - 1", abs(s["trail_s"] / s["hs_trail_s"] - 1), 0.35)]
+          ("trailing mean s_n on y = 0 FE / HS - 1", abs(s["trail_s"] / s["hs_trail_s"] - 1), 0.6)]
 failed = 0
 for what, value, limit in checks:
     ok = value <= limit

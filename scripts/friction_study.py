@@ -1,0 +1,267 @@
+#!/usr/bin/python3
+"""Velocity-dependent friction: convergence and comparison with exact theory.
+
+Issue 25, items 3 and 4. Runs (or reads) wheelrail results of one rolling
+case with the exponential law (eq. 1) at several h, dt and friction options
+and reports for each run:
+
+  F_N, mu_a      F_N and F_x / F_N of the patch at instant t; mu_a's spread
+                 (max - min) / mean over the statistics rows of the last 20 mm
+                 before O; the rigid creepage (mean over those rows)
+  slip area      area fractions of the rail nodes in contact flagged slipping
+                 by eq. 5 (force criterion) and eq. 6 (s_n > 0.05 m/s) at t
+                 (decided on the slave nodes), the eq. 6 share of the leading
+                 half,
+                 and the time means over the patch window (patch_t_mean.csv)
+  s_n trailing   mean micro-slip of the trailing half of the contact along
+                 y = 0 at t
+  half-space     Kalker's steady rolling solution with the same law at the
+                 patch's own F_N and F_x (scripts/hs_compare.py): its slip-area
+                 fraction and mean trailing slip velocity, and the RMS difference of the shear
+                 along y = 0 over f p0 (f the half-space's pressure-weighted
+                 slip-zone coefficient)
+  spectra        RMS velocity of the wheel node that passes O (wheel_probe.csv)
+                 in the paper's 30-60 kHz band and in 0.5-2 MHz, over the
+                 last LENGTH of rolling before the run's end; the strongest
+                 frequency above 100 kHz; and the strongest frequency of the
+                 same history sampled at the paper's 175 kHz and its RMS in
+                 30-60 kHz (what a 175 kHz output shows: the fast motion
+                 folded into the band)
+
+Usage:
+  friction_study.py --run --base CASE.prm --work DIR --variants LABEL:h:dt[:xi_0[:SET...]] ...
+        runs the variants that are missing (as scripts/convergence_study.py)
+  friction_study.py --work DIR --variants ... [--markdown FILE] [--figure PNG]
+                    [--spectra PNG] [--check NAME=LIMIT ...]
+        compares the runs found there; --check limits (exit status 1 if one is
+        exceeded): lead_eq6 (eq. 6 slip share of the leading half), eq5_eq6
+        (|eq. 5 - eq. 6 slip share|), slip (|eq. 5 slip area - half-space|),
+        trail_s (|trailing s_n / half-space - 1|), rms_q (shear RMS difference)
+"""
+import argparse
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import convergence_study as cs  # noqa: E402  (variants: parsing and running)
+import hs_compare as hc  # noqa: E402  (the run's files and the half-space comparison)
+
+PAPER_SAMPLING = 175e3  # Hz, the paper's output rate
+BANDS = {"30-60 kHz": (30e3, 60e3), "0.5-2 MHz": (0.5e6, 2e6)}
+
+
+def band_rms(t, v, band):
+    """RMS of v (1D) in the frequency band (Hz) of its linearly detrended
+    history (rectangular window: Parseval over the band's bins)."""
+    dt = np.median(np.diff(t))
+    v0 = v - np.polyval(np.polyfit(t - t[0], v, 1), t - t[0])
+    spectrum = np.fft.rfft(v0)
+    f = np.fft.rfftfreq(len(v0), dt)
+    inside = (f >= band[0]) & (f < band[1])
+    return np.sqrt(2 * np.sum(np.abs(spectrum[inside]) ** 2)) / len(v0)
+
+
+def spectrum(t, v):
+    """Frequencies [Hz] and Hann-windowed amplitude of the detrended v."""
+    dt = np.median(np.diff(t))
+    v0 = v - np.polyval(np.polyfit(t - t[0], v, 1), t - t[0])
+    return np.fft.rfftfreq(len(v0), dt), np.abs(np.fft.rfft(v0 * np.hanning(len(v0)))) * 2 / len(v0)
+
+
+def strongest(f, amplitude, above):
+    use = f > above
+    return f[use][np.argmax(amplitude[use])] if use.any() else float("nan")
+
+
+def probe_analysis(run, names, stats, length):
+    """The wheel probe's tangential velocities over the last @p length of rolling."""
+    path = os.path.join(run, "wheel_probe.csv")
+    if not os.path.exists(path):
+        return None
+    pr = hc.read_csv(path)
+    t = pr["t [s]"]
+    x_w = np.interp(t, hc.column(names, stats, "time"), hc.column(names, stats, "wheel x"))
+    use = x_w >= x_w[-1] - length
+    t = t[use]
+    out = dict(t=t)
+    for comp in "xy":
+        v = pr["v_%s [m/s]" % comp][use]
+        out["v_" + comp] = v
+        for name, band in BANDS.items():
+            out[(comp, name)] = band_rms(t, v, band)
+        f, a = spectrum(t, v)
+        out[(comp, "peak")] = strongest(f, a, 100e3)
+        # the same history as an output at 175 kHz would hold it
+        stride = max(1, int(round(1 / (PAPER_SAMPLING * np.median(np.diff(t))))))
+        fs, as_ = spectrum(t[::stride], v[::stride])
+        out[(comp, "alias")] = strongest(fs, as_, 10e3)
+        out[(comp, "band at 175 kHz")] = band_rms(t[::stride], v[::stride], BANDS["30-60 kHz"])
+        out[(comp, "spectra")] = (f, a, fs, as_)
+    return out
+
+
+def analyse(run, grid, length):
+    r = hc.compare_patch(run, "t", grid)
+    if r["note"]:
+        print(f"{run}: {r['note']}")
+    s = hc.slip_halves(run, r)
+    P = hc.read_patch(run, "t")
+    inc = P["in_contact"] > 0
+    eq6 = np.sum(P["area"][inc & (P["slip_eq6"] > 0)]) / np.sum(P["area"][inc])
+    names, S = hc.read_statistics(run)
+    wheel_x = hc.column(names, S, "wheel x")
+    last = (wheel_x >= -0.020) & (wheel_x <= 0.)
+    mu = hc.column(names, S, "mu_a")[last]
+    out = dict(Fn=r["Fn"], mu=r["Fx"] / r["Fn"], spread=(mu.max() - mu.min()) / abs(mu.mean()),
+               creep=hc.column(names, S, "creepage")[last].mean(), creep_hs=r["creep_hs"],
+               eq5=r["slip_fe"], eq6=eq6, lead_eq6=s["lead_eq6"],
+               trail_s=s["trail_s"], slip_hs=r["slip_hs"], hs_trail_s=s["hs_trail_s"],
+               rms_q=r["rms_q"], f=r["f_ref"], axis=r["axis"], fe=r["fe"])
+    M = hc.read_csv(os.path.join(run, "patch_t_mean.csv"))
+    if M is not None:
+        w = M["contact"] * M["area"]
+        out["eq5_mean"] = np.sum((M["contact"] - M["adhesion"]) * M["area"]) / w.sum()
+        out["eq6_mean"] = np.sum(M["slip_eq6"] * M["area"]) / w.sum()
+    out["probe"] = probe_analysis(run, names, S, length)
+    return out
+
+
+CHECKS = {
+    "lead_eq6": lambda r: r["lead_eq6"],
+    "eq5_eq6": lambda r: abs(r["eq5"] - r["eq6"]),
+    "slip": lambda r: abs(r["eq5"] - r["slip_hs"]),
+    "trail_s": lambda r: abs(r["trail_s"] / r["hs_trail_s"] - 1),
+    "rms_q": lambda r: r["rms_q"],
+}
+
+
+def tables(results):
+    head = ("| run | F_N [kN] | mu_a at t | spread, last 20 mm | creepage [1e-3] (HS at F_x) | "
+            "slip area eq. 5 / eq. 6 / half-space | window mean eq. 5 / eq. 6 | eq. 6 slip, leading half | "
+            "s_n trailing FE / HS [m/s] | RMS q_x / (f p0) |")
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
+    for label, r in results:
+        mean = (f"{r['eq5_mean']:.3f} / {r['eq6_mean']:.3f}" if "eq5_mean" in r else "-")
+        lines.append(
+            f"| {label} | {r['Fn'] / 1e3:.2f} | {r['mu']:.4f} | {100 * r['spread']:.1f} % | "
+            f"{r['creep'] * 1e3:.3f} ({r['creep_hs'] * 1e3:.3f}) | {r['eq5']:.3f} / {r['eq6']:.3f} / "
+            f"{r['slip_hs']:.3f} | {mean} | {r['lead_eq6']:.2f} | {r['trail_s']:.3f} / "
+            f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} % |")
+    head = ("| run | v_x 30-60 kHz [m/s] | v_x 0.5-2 MHz | v_y 30-60 kHz | v_y 0.5-2 MHz | "
+            "strongest above 100 kHz, x / y [kHz] | at 175 kHz sampling: v_x 30-60 kHz [m/s], "
+            "strongest x / y [kHz] |")
+    spectra = [head, "|" + "---|" * (head.count("|") - 1)]
+    for label, r in results:
+        p = r["probe"]
+        if p is None:
+            continue
+        b = [f"{p[(c, n)]:.4f}" for c in "xy" for n in BANDS]
+        spectra.append(f"| {label} | " + " | ".join(b) + f" | {p[('x', 'peak')] * 1e-3:.0f} / "
+                       f"{p[('y', 'peak')] * 1e-3:.0f} | {p[('x', 'band at 175 kHz')]:.4f}, "
+                       f"{p[('x', 'alias')] * 1e-3:.1f} / "
+                       f"{p[('y', 'alias')] * 1e-3:.1f} |")
+    return "\n".join(lines), "\n".join(spectra)
+
+
+def figures(results, patch_png, spectra_png):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    if patch_png:
+        fig, ax = plt.subplots(1, 1, figsize=(7, 4))
+        for k, (label, r) in enumerate(results):
+            c = "C%d" % k
+            ax.plot(r["axis"]["x"] * 1e3, r["axis"]["q_x"] / 1e6, "-", c=c, lw=1.5,
+                    label=f"half-space at {label}'s F_x")
+            ax.plot(r["fe"]["x"] * 1e3, r["fe"]["q_x"] / 1e6, ".", c=c, ms=4, label=label)
+        ax.set_xlabel("x - patch centre [mm] (rolling towards +x)")
+        ax.set_ylabel("shear x along y = 0 [MPa]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(patch_png, dpi=120)
+        print(f"wrote {patch_png}")
+    if spectra_png:
+        with_probe = [(label, r) for label, r in results if r["probe"] is not None]
+        fig, axes = plt.subplots(1, 2, figsize=(12, 4))
+        for label, r in with_probe:
+            f, a, fs, as_ = r["probe"][("x", "spectra")]
+            line, = axes[0].loglog(f[1:] * 1e-3, a[1:] + 1e-12, lw=0.7, label=label)
+            axes[1].semilogy(fs[1:] * 1e-3, as_[1:] + 1e-12, lw=0.9, c=line.get_color(), label=label)
+        axes[0].axvspan(30, 60, color="0.85", label="paper's 40-50 kHz band")
+        axes[1].axvspan(30, 60, color="0.85")
+        axes[0].set_title("v_x of the wheel node passing O, every step")
+        axes[1].set_title("the same sampled at 175 kHz (the paper's output rate)")
+        for ax in axes:
+            ax.set_xlabel("frequency [kHz]")
+            ax.set_ylabel("amplitude [m/s]")
+            ax.grid(alpha=0.3)
+            ax.legend(fontsize=7)
+        fig.tight_layout()
+        fig.savefig(spectra_png, dpi=120)
+        print(f"wrote {spectra_png}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
+    parser.add_argument("--variants", nargs="+", required=True,
+                        help="LABEL:h:dt[:xi_0[:Subsection/Entry=value...]], h and dt in m and s")
+    parser.add_argument("--run", action="store_true", help="run the variants that are missing")
+    parser.add_argument("--base", help="--run: the case file")
+    parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
+    parser.add_argument("--nx", type=int, default=64, help="half-space elements along x")
+    parser.add_argument("--ny", type=int, default=49, help="half-space elements along y (odd)")
+    parser.add_argument("--length", type=float, default=0.02,
+                        help="rolling distance [m] before the run's end analysed for the spectra")
+    parser.add_argument("--markdown", help="write the tables to this file")
+    parser.add_argument("--figure", help="shear along y = 0 against the half-space (PNG)")
+    parser.add_argument("--spectra", help="spectra of the wheel probe (PNG)")
+    parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
+                        help="limits (names: " + ", ".join(CHECKS) + ")")
+    args = parser.parse_args()
+    try:
+        variants = cs.parse_variants(args.variants)
+    except ValueError as e:
+        parser.error(str(e))
+    if args.run:
+        if not args.base:
+            parser.error("--run needs --base")
+        cs.run_variants(args, variants)
+
+    results = []
+    for label, *_ in variants:
+        d = os.path.join(args.work, label)
+        if not os.path.exists(os.path.join(d, "patch_t.csv")):
+            print(f"{label}: no {d}/patch_t.csv, left out")
+            continue
+        results.append((label, analyse(d, (args.nx, args.ny), args.length)))
+    if not results:
+        raise SystemExit("no runs to compare")
+    patch, spectra = tables(results)
+    print(patch + "\n\n" + spectra)
+    print(f"(half-space grid {args.nx} x {args.ny}; spectra over the last {args.length * 1e3:g} mm)")
+    if args.markdown:
+        with open(args.markdown, "w") as f:
+            f.write(patch + "\n\n" + spectra + "\n")
+    figures(results, args.figure, args.spectra)
+    if args.check:
+        passed = True
+        for item in args.check:
+            name, _, value = item.partition("=")
+            if name not in CHECKS or not value:
+                parser.error(f"--check {item}: expected NAME=LIMIT with NAME one of " + ", ".join(CHECKS))
+            for label, r in results:
+                error = CHECKS[name](r)
+                ok = bool(error <= float(value))
+                passed &= ok
+                print(f"{label}: {name:8s} {error:.3f}  limit {float(value):.3f}  {'ok' if ok else 'FAILED'}")
+        if not passed:
+            raise SystemExit("friction_study.py: a limit is exceeded")
+
+
+if __name__ == "__main__":
+    main()
