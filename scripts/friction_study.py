@@ -11,15 +11,14 @@ and reports for each run:
   slip area      area fractions of the rail nodes in contact flagged slipping
                  by eq. 5 (force criterion) and eq. 6 (s_n > 0.05 m/s) at t
                  (decided on the slave nodes), the eq. 6 share of the leading
-                 half,
-                 and the time means over the patch window (patch_t_mean.csv)
+                 half, and the time means over the patch window (patch_t_mean.csv)
   s_n trailing   mean micro-slip of the trailing half of the contact along
                  y = 0 at t
-  half-space     Kalker's steady rolling solution with the same law at the
-                 patch's own F_N and F_x (scripts/hs_compare.py): its slip-area
-                 fraction and mean trailing slip velocity, and the RMS difference of the shear
-                 along y = 0 over f p0 (f the half-space's pressure-weighted
-                 slip-zone coefficient)
+  half-space     Kalker's steady rolling solution with the same law (its
+                 friction state included) at the patch's own F_N and F_x
+                 (scripts/hs_compare.py): its slip-area fraction and mean
+                 trailing slip velocity along y = 0, and the RMS difference of
+                 the shear along y = 0 over f_S p0, at t and of the window means
   spectra        RMS velocity of the wheel node that passes O (wheel_probe.csv)
                  in the paper's 30-60 kHz band and in 0.5-2 MHz, over the
                  last LENGTH of rolling before the run's end; the strongest
@@ -107,6 +106,7 @@ def analyse(run, grid, length):
     if r["note"]:
         print(f"{run}: {r['note']}")
     s = hc.slip_halves(run, r)
+    _, f_s, _ = hc.law_of(hc.read_parameters(run))
     P = hc.read_patch(run, "t")
     inc = P["in_contact"] > 0
     eq6 = np.sum(P["area"][inc & (P["slip_eq6"] > 0)]) / np.sum(P["area"][inc])
@@ -118,12 +118,20 @@ def analyse(run, grid, length):
                creep=hc.column(names, S, "creepage")[last].mean(), creep_hs=r["creep_hs"],
                eq5=r["slip_fe"], eq6=eq6, lead_eq6=s["lead_eq6"],
                trail_s=s["trail_s"], slip_hs=r["slip_hs"], hs_trail_s=s["hs_trail_s"],
-               rms_q=r["rms_q"], f=r["f_ref"], axis=r["axis"], fe=r["fe"])
+               rms_q=r["rms_q"] * r["f_ref"] / f_s, axis=r["axis"], fe=r["fe"])
     M = hc.read_csv(os.path.join(run, "patch_t_mean.csv"))
     if M is not None:
         w = M["contact"] * M["area"]
         out["eq5_mean"] = np.sum((M["contact"] - M["adhesion"]) * M["area"]) / w.sum()
         out["eq6_mean"] = np.sum(M["slip_eq6"] * M["area"]) / w.sum()
+        # the window's mean shear along y = 0 against the same half-space solution
+        rows = hc.axis_rows(M)
+        x = M["x"][rows] - r["xc"]
+        a = r["axis"]
+        q_hs = np.interp(x, a["x"], a["q_x"], left=0., right=0.)
+        compared = (M["contact"][rows] > 0) | (q_hs != 0)
+        out["rms_q_mean"] = (np.sqrt(np.mean((M["shear_x"][rows][compared] - q_hs[compared]) ** 2))
+                             / (f_s * r["p0_hs"]))
     out["probe"] = probe_analysis(run, names, S, length)
     return out
 
@@ -140,7 +148,7 @@ CHECKS = {
 def tables(results):
     head = ("| run | F_N [kN] | mu_a at t | spread, last 20 mm | creepage [1e-3] (HS at F_x) | "
             "slip area eq. 5 / eq. 6 / half-space | window mean eq. 5 / eq. 6 | eq. 6 slip, leading half | "
-            "s_n trailing FE / HS [m/s] | RMS q_x / (f p0) |")
+            "s_n trailing FE / HS [m/s] | RMS q_x / (f_S p0) at t, window mean |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for label, r in results:
         mean = (f"{r['eq5_mean']:.3f} / {r['eq6_mean']:.3f}" if "eq5_mean" in r else "-")
@@ -148,7 +156,8 @@ def tables(results):
             f"| {label} | {r['Fn'] / 1e3:.2f} | {r['mu']:.4f} | {100 * r['spread']:.1f} % | "
             f"{r['creep'] * 1e3:.3f} ({r['creep_hs'] * 1e3:.3f}) | {r['eq5']:.3f} / {r['eq6']:.3f} / "
             f"{r['slip_hs']:.3f} | {mean} | {r['lead_eq6']:.2f} | {r['trail_s']:.3f} / "
-            f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} % |")
+            f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} %, "
+            + (f"{100 * r['rms_q_mean']:.1f} % |" if "rms_q_mean" in r else "- |"))
     head = ("| run | v_x 30-60 kHz [m/s] | v_x 0.5-2 MHz | v_y 30-60 kHz | v_y 0.5-2 MHz | "
             "strongest above 100 kHz, x / y [kHz] | at 175 kHz sampling: v_x 30-60 kHz [m/s], "
             "strongest x / y [kHz] |")

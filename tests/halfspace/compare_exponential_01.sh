@@ -30,4 +30,4 @@ end
 PRM
 "$exe" case.prm > wheelrail.log
 /usr/bin/python3 "$src/scripts/friction_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
-  --nx 32 --ny 17 --check lead_eq6=0.10 eq5_eq6=0.07 slip=0.05 trail_s=0.30 rms_q=0.06
+  --nx 32 --ny 17 --check lead_eq6=0.10 eq5_eq6=0.07 slip=0.05 trail_s=0.15 rms_q=0.05
