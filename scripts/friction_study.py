@@ -7,7 +7,8 @@ and reports for each run:
 
   F_N, mu_a      F_N and F_x / F_N of the patch at instant t; mu_a's spread
                  (max - min) / mean over the statistics rows of the last 20 mm
-                 before O; the rigid creepage (mean over those rows)
+                 before O; the rigid creepage (mean over those rows, and its
+                 change over them: a run-away slip shows there)
   slip area      area fractions of the rail nodes in contact flagged slipping
                  by eq. 5 (force criterion) and eq. 6 (s_n > 0.05 m/s) at t
                  (decided on the slave nodes), the eq. 6 share of the leading
@@ -114,11 +115,19 @@ def analyse(run, grid, length):
     wheel_x = hc.column(names, S, "wheel x")
     last = (wheel_x >= -0.020) & (wheel_x <= 0.)
     mu = hc.column(names, S, "mu_a")[last]
+    creep_hist = hc.column(names, S, "creepage")[last]
+    t_hist = hc.column(names, S, "time")[last]
+    trail_hist = hc.column(names, S, "trailing micro-slip")[last]
+    slip_hist = hc.column(names, S, "slip nodes")[last] / hc.column(names, S, "contact nodes")[last]
     out = dict(Fn=r["Fn"], mu=r["Fx"] / r["Fn"], spread=(mu.max() - mu.min()) / abs(mu.mean()),
-               creep=hc.column(names, S, "creepage")[last].mean(), creep_hs=r["creep_hs"],
+               creep=creep_hist.mean(), creep_drift=creep_hist[-1] - creep_hist[0],
+               creep_hs=r["creep_hs"],
                eq5=r["slip_fe"], eq6=eq6, lead_eq6=s["lead_eq6"],
                trail_s=s["trail_s"], slip_hs=r["slip_hs"], hs_trail_s=s["hs_trail_s"],
-               rms_q=r["rms_q"] * r["f_ref"] / f_s, axis=r["axis"], fe=r["fe"])
+               rms_q=r["rms_q"] * r["f_ref"] / f_s, axis=r["axis"], fe=r["fe"],
+               trail_hist=trail_hist.mean(), slip_hist=slip_hist.mean(),
+               trail_band=band_rms(t_hist, trail_hist, BANDS["30-60 kHz"]),
+               slip_band=band_rms(t_hist, slip_hist, BANDS["30-60 kHz"]))
     M = hc.read_csv(os.path.join(run, "patch_t_mean.csv"))
     if M is not None:
         w = M["contact"] * M["area"]
@@ -127,6 +136,12 @@ def analyse(run, grid, length):
         # the window's mean shear along y = 0 against the same half-space solution
         rows = hc.axis_rows(M)
         x = M["x"][rows] - r["xc"]
+        # mean s_n of the trailing half of the contact along y = 0 (a node's mean over
+        # the steps it is in contact)
+        c = M["contact"][rows] > 0.5
+        xc = x[c]
+        trail = xc < 0.5 * (xc.max() + xc.min())
+        out["trail_s_mean"] = np.mean(M["slip_velocity"][rows][c][trail] / M["contact"][rows][c][trail])
         a = r["axis"]
         q_hs = np.interp(x, a["x"], a["q_x"], left=0., right=0.)
         compared = (M["contact"][rows] > 0) | (q_hs != 0)
@@ -146,21 +161,26 @@ CHECKS = {
 
 
 def tables(results):
-    head = ("| run | F_N [kN] | mu_a at t | spread, last 20 mm | creepage [1e-3] (HS at F_x) | "
+    head = ("| run | F_N [kN] | mu_a at t | spread, last 20 mm | creepage [1e-3]: mean, change over the "
+            "last 20 mm (HS at F_x) | "
             "slip area eq. 5 / eq. 6 / half-space | window mean eq. 5 / eq. 6 | eq. 6 slip, leading half | "
-            "s_n trailing FE / HS [m/s] | RMS q_x / (f_S p0) at t, window mean |")
+            "s_n trailing FE at t, window mean / HS [m/s] | RMS q_x / (f_S p0) at t, window mean | "
+            "last 20 mm means: slip nodes / contact nodes, trailing s_n [m/s] |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for label, r in results:
-        mean = (f"{r['eq5_mean']:.3f} / {r['eq6_mean']:.3f}" if "eq5_mean" in r else "-")
+        def opt(key, fmt, scale=1.0):
+            return fmt % (scale * r[key]) if key in r else "-"
         lines.append(
             f"| {label} | {r['Fn'] / 1e3:.2f} | {r['mu']:.4f} | {100 * r['spread']:.1f} % | "
-            f"{r['creep'] * 1e3:.3f} ({r['creep_hs'] * 1e3:.3f}) | {r['eq5']:.3f} / {r['eq6']:.3f} / "
-            f"{r['slip_hs']:.3f} | {mean} | {r['lead_eq6']:.2f} | {r['trail_s']:.3f} / "
-            f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} %, "
-            + (f"{100 * r['rms_q_mean']:.1f} % |" if "rms_q_mean" in r else "- |"))
+            f"{r['creep'] * 1e3:.3f}, {r['creep_drift'] * 1e3:+.3f} ({r['creep_hs'] * 1e3:.3f}) | {r['eq5']:.3f} / {r['eq6']:.3f} / "
+            f"{r['slip_hs']:.3f} | {opt('eq5_mean', '%.3f')} / {opt('eq6_mean', '%.3f')} | "
+            f"{r['lead_eq6']:.2f} | {r['trail_s']:.3f}, {opt('trail_s_mean', '%.3f')} / "
+            f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} %, {opt('rms_q_mean', '%.1f %%', 100)} | "
+            f"{r['slip_hist']:.3f}, {r['trail_hist']:.3f} |")
     head = ("| run | v_x 30-60 kHz [m/s] | v_x 0.5-2 MHz | v_y 30-60 kHz | v_y 0.5-2 MHz | "
             "strongest above 100 kHz, x / y [kHz] | at 175 kHz sampling: v_x 30-60 kHz [m/s], "
-            "strongest x / y [kHz] |")
+            "strongest x / y [kHz] | 30-60 kHz RMS over the last 20 mm: slip-node fraction, "
+            "trailing s_n [m/s] |")
     spectra = [head, "|" + "---|" * (head.count("|") - 1)]
     for label, r in results:
         p = r["probe"]
@@ -170,7 +190,7 @@ def tables(results):
         spectra.append(f"| {label} | " + " | ".join(b) + f" | {p[('x', 'peak')] * 1e-3:.0f} / "
                        f"{p[('y', 'peak')] * 1e-3:.0f} | {p[('x', 'band at 175 kHz')]:.4f}, "
                        f"{p[('x', 'alias')] * 1e-3:.1f} / "
-                       f"{p[('y', 'alias')] * 1e-3:.1f} |")
+                       f"{p[('y', 'alias')] * 1e-3:.1f} | {r['slip_band']:.4f}, {r['trail_band']:.4f} |")
     return "\n".join(lines), "\n".join(spectra)
 
 
