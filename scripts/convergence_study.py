@@ -176,22 +176,22 @@ def run_variants(args, variants):
                            stderr=subprocess.STDOUT, env=env, check=True)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__,
-                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+def add_variant_arguments(parser, default_variants=None):
+    """The options of the runs and of the half-space grid (this script and
+    friction_study.py)."""
     parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
-    parser.add_argument("--variants", nargs="+", default=DEFAULT_VARIANTS,
+    parser.add_argument("--variants", nargs="+", default=default_variants,
+                        required=default_variants is None,
                         help="LABEL:h:dt[:xi_0[:Subsection/Entry=value...]], h and dt in m and s")
     parser.add_argument("--run", action="store_true", help="run the variants that are missing")
     parser.add_argument("--base", help="--run: the case file")
     parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
     parser.add_argument("--nx", type=int, default=64, help="half-space elements along x")
     parser.add_argument("--ny", type=int, default=49, help="half-space elements along y (odd)")
-    parser.add_argument("--markdown", help="write the table to this file")
-    parser.add_argument("--figure", help="write the shear and pressure along y = 0 to this PNG")
-    parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
-                        help="limits of the errors (names: " + ", ".join(CHECKS) + ")")
-    args = parser.parse_args()
+
+
+def variants_of(args, parser):
+    """The parsed --variants; with --run, the missing ones run first."""
     try:
         variants = parse_variants(args.variants)
     except ValueError as e:
@@ -200,16 +200,35 @@ def main():
         if not args.base:
             parser.error("--run needs --base")
         run_variants(args, variants)
+    return variants
 
-    results = []
+
+def runs_found(args, variants):
+    """(label, directory) of the variants whose run wrote patch_t.csv."""
+    found = []
     for label, *_ in variants:
         d = os.path.join(args.work, label)
-        if not os.path.exists(os.path.join(d, "patch_t.csv")):
+        if os.path.exists(os.path.join(d, "patch_t.csv")):
+            found.append((label, d))
+        else:
             print(f"{label}: no {d}/patch_t.csv, left out")
-            continue
-        results.append((label, analyse(d, args.nx, args.ny)))
-    if not results:
+    if not found:
         raise SystemExit("no runs to compare")
+    return found
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    add_variant_arguments(parser, DEFAULT_VARIANTS)
+    parser.add_argument("--markdown", help="write the table to this file")
+    parser.add_argument("--figure", help="write the shear and pressure along y = 0 to this PNG")
+    parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
+                        help="limits of the errors (names: " + ", ".join(CHECKS) + ")")
+    args = parser.parse_args()
+    variants = variants_of(args, parser)
+
+    results = [(label, analyse(d, args.nx, args.ny)) for label, d in runs_found(args, variants)]
 
     head = ("| run | F_N [kN] | mu_a at t | mu_a spread, last 20 mm | p0 [MPa] (Hertz) | a [mm] | "
             "b [mm] | L on y=0 [mm] | creepage FE / half-space [1e-3] | slip area FE / HS | "

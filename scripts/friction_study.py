@@ -21,7 +21,7 @@ and reports for each run:
                  trailing slip velocity along y = 0, and the RMS difference of
                  the shear along y = 0 over f_S p0, at t and of the window means
   spectra        RMS velocity of the wheel node that passes O (wheel_probe.csv)
-                 in the paper's 30-60 kHz band and in 0.5-2 MHz, over the
+                 in the paper's 30-60 kHz band, in 0.5-2 MHz and 2-20 MHz, over the
                  last LENGTH of rolling before the run's end; the strongest
                  frequency above 100 kHz; and the strongest frequency of the
                  same history sampled at the paper's 175 kHz and its RMS in
@@ -49,7 +49,7 @@ import convergence_study as cs  # noqa: E402  (variants: parsing and running)
 import hs_compare as hc  # noqa: E402  (the run's files and the half-space comparison)
 
 PAPER_SAMPLING = 175e3  # Hz, the paper's output rate
-BANDS = {"30-60 kHz": (30e3, 60e3), "0.5-2 MHz": (0.5e6, 2e6)}
+BANDS = {"30-60 kHz": (30e3, 60e3), "0.5-2 MHz": (0.5e6, 2e6), "2-20 MHz": (2e6, 20e6)}
 
 
 def band_rms(t, v, band):
@@ -177,7 +177,8 @@ def tables(results):
             f"{r['lead_eq6']:.2f} | {r['trail_s']:.3f}, {opt('trail_s_mean', '%.3f')} / "
             f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} %, {opt('rms_q_mean', '%.1f %%', 100)} | "
             f"{r['slip_hist']:.3f}, {r['trail_hist']:.3f} |")
-    head = ("| run | v_x 30-60 kHz [m/s] | v_x 0.5-2 MHz | v_y 30-60 kHz | v_y 0.5-2 MHz | "
+    head = ("| run | " + " | ".join(f"v_{c} {n}" + (" [m/s]" if c == "x" and n == "30-60 kHz" else "")
+                                   for c in "xy" for n in BANDS) + " | "
             "strongest above 100 kHz, x / y [kHz] | at 175 kHz sampling: v_x 30-60 kHz [m/s], "
             "strongest x / y [kHz] | 30-60 kHz RMS over the last 20 mm: slip-node fraction, "
             "trailing s_n [m/s] |")
@@ -194,6 +195,34 @@ def tables(results):
     return "\n".join(lines), "\n".join(spectra)
 
 
+def finish(fig, axes, png, xlabel, ylabels=None):
+    """Labels, grid and legend on each axis; the figure written to png."""
+    for k, ax in enumerate(axes):
+        ax.set_xlabel(xlabel)
+        if ylabels:
+            ax.set_ylabel(ylabels[k])
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(png, dpi=120)
+    print(f"wrote {png}")
+
+
+def history_figure(runs, png):
+    """mu_a and the rigid creepage against the wheel position, one line per run."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4))
+    for label, d in runs:
+        names, S = hc.read_statistics(d)
+        x = hc.column(names, S, "wheel x") * 1e3
+        axes[0].plot(x, hc.column(names, S, "mu_a"), lw=0.8, label=label)
+        axes[1].plot(x, hc.column(names, S, "creepage") * 1e3, lw=0.8, label=label)
+    finish(fig, axes, png, "wheel position x_w [mm] (O at 0)",
+           ["mu_a = F_x / F_N", "rigid creepage (v_x - omega r) / v_x [1e-3]"])
+
+
 def figures(results, patch_png, spectra_png):
     import matplotlib
     matplotlib.use("Agg")
@@ -205,13 +234,8 @@ def figures(results, patch_png, spectra_png):
             ax.plot(r["axis"]["x"] * 1e3, r["axis"]["q_x"] / 1e6, "-", c=c, lw=1.5,
                     label=f"half-space at {label}'s F_x")
             ax.plot(r["fe"]["x"] * 1e3, r["fe"]["q_x"] / 1e6, ".", c=c, ms=4, label=label)
-        ax.set_xlabel("x - patch centre [mm] (rolling towards +x)")
-        ax.set_ylabel("shear x along y = 0 [MPa]")
-        ax.grid(alpha=0.3)
-        ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(patch_png, dpi=120)
-        print(f"wrote {patch_png}")
+        finish(fig, [ax], patch_png, "x - patch centre [mm] (rolling towards +x)",
+               ["shear x along y = 0 [MPa]"])
     if spectra_png:
         with_probe = [(label, r) for label, r in results if r["probe"] is not None]
         fig, axes = plt.subplots(1, 2, figsize=(12, 4))
@@ -223,53 +247,26 @@ def figures(results, patch_png, spectra_png):
         axes[1].axvspan(30, 60, color="0.85")
         axes[0].set_title("v_x of the wheel node passing O, every step")
         axes[1].set_title("the same sampled at 175 kHz (the paper's output rate)")
-        for ax in axes:
-            ax.set_xlabel("frequency [kHz]")
-            ax.set_ylabel("amplitude [m/s]")
-            ax.grid(alpha=0.3)
-            ax.legend(fontsize=7)
-        fig.tight_layout()
-        fig.savefig(spectra_png, dpi=120)
-        print(f"wrote {spectra_png}")
+        finish(fig, axes, spectra_png, "frequency [kHz]", ["amplitude [m/s]"] * 2)
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--work", required=True, help="directory of the runs (one per variant)")
-    parser.add_argument("--variants", nargs="+", required=True,
-                        help="LABEL:h:dt[:xi_0[:Subsection/Entry=value...]], h and dt in m and s")
-    parser.add_argument("--run", action="store_true", help="run the variants that are missing")
-    parser.add_argument("--base", help="--run: the case file")
-    parser.add_argument("--np", type=int, default=2, help="--run: MPI ranks")
-    parser.add_argument("--nx", type=int, default=64, help="half-space elements along x")
-    parser.add_argument("--ny", type=int, default=49, help="half-space elements along y (odd)")
+    cs.add_variant_arguments(parser)
     parser.add_argument("--length", type=float, default=0.02,
                         help="rolling distance [m] before the run's end analysed for the spectra")
     parser.add_argument("--markdown", help="write the tables to this file")
     parser.add_argument("--figure", help="shear along y = 0 against the half-space (PNG)")
     parser.add_argument("--spectra", help="spectra of the wheel probe (PNG)")
+    parser.add_argument("--history", help="mu_a and creepage against the wheel position (PNG)")
     parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
                         help="limits (names: " + ", ".join(CHECKS) + ")")
     args = parser.parse_args()
-    try:
-        variants = cs.parse_variants(args.variants)
-    except ValueError as e:
-        parser.error(str(e))
-    if args.run:
-        if not args.base:
-            parser.error("--run needs --base")
-        cs.run_variants(args, variants)
+    variants = cs.variants_of(args, parser)
 
-    results = []
-    for label, *_ in variants:
-        d = os.path.join(args.work, label)
-        if not os.path.exists(os.path.join(d, "patch_t.csv")):
-            print(f"{label}: no {d}/patch_t.csv, left out")
-            continue
-        results.append((label, analyse(d, (args.nx, args.ny), args.length)))
-    if not results:
-        raise SystemExit("no runs to compare")
+    results = [(label, analyse(d, (args.nx, args.ny), args.length))
+               for label, d in cs.runs_found(args, variants)]
     patch, spectra = tables(results)
     print(patch + "\n\n" + spectra)
     print(f"(half-space grid {args.nx} x {args.ny}; spectra over the last {args.length * 1e3:g} mm)")
@@ -277,6 +274,8 @@ def main():
         with open(args.markdown, "w") as f:
             f.write(patch + "\n\n" + spectra + "\n")
     figures(results, args.figure, args.spectra)
+    if args.history:
+        history_figure([(label, os.path.join(args.work, label)) for label, _ in results], args.history)
     if args.check:
         passed = True
         for item in args.check:
