@@ -52,22 +52,25 @@ PAPER_SAMPLING = 175e3  # Hz, the paper's output rate
 BANDS = {"30-60 kHz": (30e3, 60e3), "0.5-2 MHz": (0.5e6, 2e6), "2-20 MHz": (2e6, 20e6)}
 
 
-def band_rms(t, v, band):
-    """RMS of v (1D) in the frequency band (Hz) of its linearly detrended
-    history (rectangular window: Parseval over the band's bins)."""
-    dt = np.median(np.diff(t))
-    v0 = v - np.polyval(np.polyfit(t - t[0], v, 1), t - t[0])
-    spectrum = np.fft.rfft(v0)
-    f = np.fft.rfftfreq(len(v0), dt)
-    inside = (f >= band[0]) & (f < band[1])
-    return np.sqrt(2 * np.sum(np.abs(spectrum[inside]) ** 2)) / len(v0)
+def detrended(t, v):
+    """v less its straight-line fit in t."""
+    return v - np.polyval(np.polyfit(t - t[0], v, 1), t - t[0])
+
+
+def band_rms(t, v, bands):
+    """RMS of v (1D) in each frequency band (lo, hi) [Hz] of its detrended
+    history, from one FFT (rectangular window: Parseval over the band's bins)."""
+    v0 = detrended(t, v)
+    power = np.abs(np.fft.rfft(v0)) ** 2
+    f = np.fft.rfftfreq(len(v0), np.median(np.diff(t)))
+    return [np.sqrt(2 * np.sum(power[(f >= lo) & (f < hi)])) / len(v0) for lo, hi in bands]
 
 
 def spectrum(t, v):
     """Frequencies [Hz] and Hann-windowed amplitude of the detrended v."""
-    dt = np.median(np.diff(t))
-    v0 = v - np.polyval(np.polyfit(t - t[0], v, 1), t - t[0])
-    return np.fft.rfftfreq(len(v0), dt), np.abs(np.fft.rfft(v0 * np.hanning(len(v0)))) * 2 / len(v0)
+    v0 = detrended(t, v)
+    return (np.fft.rfftfreq(len(v0), np.median(np.diff(t))),
+            np.abs(np.fft.rfft(v0 * np.hanning(len(v0)))) * 2 / len(v0))
 
 
 def strongest(f, amplitude, above):
@@ -85,19 +88,18 @@ def probe_analysis(run, names, stats, length):
     x_w = np.interp(t, hc.column(names, stats, "time"), hc.column(names, stats, "wheel x"))
     use = x_w >= x_w[-1] - length
     t = t[use]
-    out = dict(t=t)
+    out = {}
     for comp in "xy":
         v = pr["v_%s [m/s]" % comp][use]
-        out["v_" + comp] = v
-        for name, band in BANDS.items():
-            out[(comp, name)] = band_rms(t, v, band)
+        for name, rms in zip(BANDS, band_rms(t, v, BANDS.values())):
+            out[(comp, name)] = rms
         f, a = spectrum(t, v)
         out[(comp, "peak")] = strongest(f, a, 100e3)
         # the same history as an output at 175 kHz would hold it
         stride = max(1, int(round(1 / (PAPER_SAMPLING * np.median(np.diff(t))))))
         fs, as_ = spectrum(t[::stride], v[::stride])
         out[(comp, "alias")] = strongest(fs, as_, 10e3)
-        out[(comp, "band at 175 kHz")] = band_rms(t[::stride], v[::stride], BANDS["30-60 kHz"])
+        out[(comp, "band at 175 kHz")] = band_rms(t[::stride], v[::stride], [BANDS["30-60 kHz"]])[0]
         out[(comp, "spectra")] = (f, a, fs, as_)
     return out
 
@@ -126,8 +128,8 @@ def analyse(run, grid, length):
                trail_s=s["trail_s"], slip_hs=r["slip_hs"], hs_trail_s=s["hs_trail_s"],
                rms_q=r["rms_q"] * r["f_ref"] / f_s, axis=r["axis"], fe=r["fe"],
                trail_hist=trail_hist.mean(), slip_hist=slip_hist.mean(),
-               trail_band=band_rms(t_hist, trail_hist, BANDS["30-60 kHz"]),
-               slip_band=band_rms(t_hist, slip_hist, BANDS["30-60 kHz"]))
+               trail_band=band_rms(t_hist, trail_hist, [BANDS["30-60 kHz"]])[0],
+               slip_band=band_rms(t_hist, slip_hist, [BANDS["30-60 kHz"]])[0])
     M = hc.read_csv(os.path.join(run, "patch_t_mean.csv"))
     if M is not None:
         w = M["contact"] * M["area"]

@@ -10,21 +10,6 @@
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
-rm -rf h1.32
-cat > case.prm <<PRM
-include $src/prm/compare_coulomb.prm
-subsection Problem
-  set Output directory = h1.32
-end
-subsection Geometry
-  subsection Mesh
-    set Minimum cell size = 0.00132
-  end
-end
-subsection Time integration
-  set Time step = 1.04e-7
-end
-PRM
-"$exe" case.prm > wheelrail.log
+bash "$(dirname "$0")/coarse_run.sh" "$exe" "$src/prm/compare_coulomb.prm"
 /usr/bin/python3 "$src/scripts/convergence_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
   --nx 32 --ny 17 --check p0=0.06 a=0.02 b=0.02 creep=0.02 slip=0.04 rms_p=0.04 rms_q=0.05 spread=0.07

@@ -13,21 +13,6 @@
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
-rm -rf h1.32
-cat > case.prm <<PRM
-include $src/prm/compare_exponential.prm
-subsection Problem
-  set Output directory = h1.32
-end
-subsection Geometry
-  subsection Mesh
-    set Minimum cell size = 0.00132
-  end
-end
-subsection Time integration
-  set Time step = 1.04e-7
-end
-PRM
-"$exe" case.prm > wheelrail.log
+bash "$(dirname "$0")/coarse_run.sh" "$exe" "$src/prm/compare_exponential.prm"
 /usr/bin/python3 "$src/scripts/friction_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
   --nx 32 --ny 17 --check lead_eq6=0.10 eq5_eq6=0.07 slip=0.05 trail_s=0.15 rms_q=0.05
