@@ -60,20 +60,10 @@ namespace WheelRail
   {
     Result result;
 
-    // the elastic trial and the damper, in the tangent plane
+    // the spring's elastic trial, in the tangent plane; beyond the cone it
+    // is the irreversible slip
     dealii::Tensor<1, 3> elastic = memory.elastic_force - k_t * de;
     elastic -= (elastic * normal) * normal;
-    dealii::Tensor<1, 3> trial = elastic;
-    double               c_t   = 0;
-    if (opts.damping_ratio > 0)
-      {
-        c_t                          = 2. * opts.damping_ratio * std::sqrt(k_t * mass);
-        dealii::Tensor<1, 3> viscous = (-c_t / dt) * de;
-        viscous -= (viscous * normal) * normal;
-        trial += viscous;
-      }
-    // the spring's trial beyond the cone is the irreversible slip; the
-    // damper's force is not slip
     const double elastic_norm = elastic.norm();
 
     // the slip rate the law sees and the coefficient of the cone
@@ -106,14 +96,22 @@ namespace WheelRail
       }
 
     result.force =
-      return_map(trial, cof * normal_force, k_t, result.slipping, result.friction_loss);
-    if (result.slipping)
-      memory.elastic_force = result.force;
-    else
+      return_map(elastic, cof * normal_force, k_t, result.slipping, result.friction_loss);
+    memory.elastic_force = result.force;
+    if (!result.slipping && opts.damping_ratio > 0)
       {
-        memory.elastic_force = elastic;
-        if (c_t > 0)
-          result.damping_work = (trial - elastic).norm_square() * dt / c_t;
+        // the damper in parallel with the sticking spring, the sum capped by
+        // the cone; it dissipates the work of its share on the relative
+        // motion -de
+        const double         c_t     = 2. * opts.damping_ratio * std::sqrt(k_t * mass);
+        dealii::Tensor<1, 3> viscous = (-c_t / dt) * de;
+        viscous -= (viscous * normal) * normal;
+        dealii::Tensor<1, 3> total = elastic + viscous;
+        const double         limit = cof * normal_force;
+        if (total.norm() > limit)
+          total *= limit / total.norm();
+        result.damping_work = -((total - elastic) * de);
+        result.force        = total;
       }
 
     result.cof  = cof;

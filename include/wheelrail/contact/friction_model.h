@@ -39,9 +39,11 @@ namespace WheelRail
    *   into contact starts at theta = f(0). s is then computed with the
    *   state at the start of the step.
    * - Tangential damping: a viscous force -c_t de / dt, c_t = 2 zeta
-   *   sqrt(k_t m), added to the trial force; it acts in stick, where it damps
-   *   the slave node's mode on its tangential spring, and is capped by the
-   *   cone in slip. The spring's memory keeps the elastic part only.
+   *   sqrt(k_t m), in parallel with the spring while it sticks (it damps the
+   *   slave node's mode on its tangential spring); the sum is capped by the
+   *   cone. Whether the point slips is the spring's decision alone, and the
+   *   spring's memory keeps the elastic part only. The damper's work on the
+   *   relative motion is its dissipation.
    */
   class FrictionModel
   {
