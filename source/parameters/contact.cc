@@ -72,8 +72,13 @@ namespace WheelRail
                       "Viscous damping of the normal contact force, a fraction "
                       "of the critical damping 2 sqrt(k m) of the slave node on "
                       "its penalty spring (LS-DYNA's VDC / 100) [-], range "
-                      "[0, 1]; it damps the chatter of bodies resting on each "
-                      "other.");
+                      "[0, 1]. Undamped, the contact nodes ring on their "
+                      "penalty springs (MHz), their friction cones breathe "
+                      "with them and slipping nodes stick in part of the "
+                      "steps (doc/interface.md). It acts at each node with "
+                      "zeta limited so that (w dt)^2 + 4 zeta w dt <= 2, "
+                      "w = 2 sqrt(k / m): a spring stiff for the time step "
+                      "is left undamped.");
     prm.declare_entry("Search interval",
                       "10",
                       Patterns::Integer(1, 1000000),
