@@ -35,7 +35,9 @@ Usage:
         exceeded: p0, a, b (relative error from Hertz), L (relative error of
         the length on y = 0 from 2a), creep (relative error of the creepage from
         the half-space one), slip (absolute difference of the slip-area
-        fractions), rms_p, rms_q (the RMS differences), spread (mu_a spread)
+        fractions), rms_p, rms_q (the RMS differences), spread (mu_a spread),
+        stick (the mean adhesion share of the slip zone's nodes over the
+        window of patch_t_mean.csv: the steps in which they stick)
 
 Coulomb friction only (constant f, read from each run's parameters.prm).
 """
@@ -78,6 +80,16 @@ def analyse(directory, nx, ny):
     xs = P["x"][rows][P["in_contact"][rows] > 0]
     length = xs.max() - xs.min() if xs.size else 0.
 
+    # the slip state's steadiness: over the window of patch_t_mean.csv, the
+    # mean adhesion share (eq. 5) of the nodes in contact at every step that
+    # adhere in less than half of the steps (the slip zone); in steady
+    # rolling they slip at every step
+    M = hc.read_csv(os.path.join(directory, "patch_t_mean.csv"))
+    stick = float("nan")
+    if M is not None:
+        zone = (M["contact"] > 0.999) & (M["adhesion"] < 0.5)
+        stick = M["adhesion"][zone].mean() if zone.any() else 0.
+
     names, S = hc.read_statistics(directory)
     wheel_x = hc.column(names, S, "wheel x")
     last = (wheel_x >= -0.020) & (wheel_x <= 0.)
@@ -89,7 +101,7 @@ def analyse(directory, nx, ny):
                 mu_spread=(mu.max() - mu.min()) / abs(mu.mean()) if mu.size else float("nan"),
                 creep=creep.mean() if creep.size else float("nan"),
                 creep_hs=r["creep_hs"], slip=r["slip_fe"], slip_hs=r["slip_hs"],
-                rms_p=r["rms_p"], rms_q=r["rms_q"], f=r["f_ref"], row_x=r["fe"]["x"],
+                rms_p=r["rms_p"], rms_q=r["rms_q"], stick=stick, f=r["f_ref"], row_x=r["fe"]["x"],
                 row_p=r["fe"]["p"], row_q=r["fe"]["q_x"],
                 ref=dict(x=axis["x"], p=axis["p"], q_x=axis["q_x"]))
 
@@ -105,6 +117,7 @@ CHECKS = {
     "rms_p": lambda r: r["rms_p"],
     "rms_q": lambda r: r["rms_q"],
     "spread": lambda r: r["mu_spread"],
+    "stick": lambda r: r["stick"],
 }
 
 
