@@ -84,7 +84,7 @@ def analyse(directory, nx, ny):
     # mean adhesion share (eq. 5) of the nodes in contact at every step that
     # adhere in less than half of the steps (the slip zone); in steady
     # rolling they slip at every step
-    M = hc.read_csv(os.path.join(directory, "patch_t_mean.csv"))
+    M = hc.read_patch(directory, "t_mean")
     stick = float("nan")
     if M is not None:
         zone = (M["contact"] > 0.999) & (M["adhesion"] < 0.5)

@@ -130,7 +130,7 @@ def analyse(run, grid, length):
                trail_hist=trail_hist.mean(), slip_hist=slip_hist.mean(),
                trail_band=band_rms(t_hist, trail_hist, [BANDS["30-60 kHz"]])[0],
                slip_band=band_rms(t_hist, slip_hist, [BANDS["30-60 kHz"]])[0])
-    M = hc.read_csv(os.path.join(run, "patch_t_mean.csv"))
+    M = hc.read_patch(run, "t_mean")
     if M is not None:
         w = M["contact"] * M["area"]
         out["eq5_mean"] = np.sum((M["contact"] - M["adhesion"]) * M["area"]) / w.sum()
