@@ -155,16 +155,32 @@ namespace WheelRail
                       "and bending vibrations that the onset of traction excites "
                       "(about 680 Hz, lightly damped: mu_a swings by +-13 % for "
                       "several ms) so that the traction is steady when the patch is "
-                      "sampled. It also acts on the rolling deformation convected "
-                      "through the patch (v - v_rigid = -V du/dx there, about "
-                      "0.04 m/s), so it is for the run-up only, before the patch "
-                      "is sampled. Critical for a mode of angular frequency w at "
+                      "sampled. With Run-up damping shape = nodes it also acts on "
+                      "the rolling deformation convected through the patch "
+                      "(v - v_rigid = -V du/dx there, about 0.04 m/s), so it is for "
+                      "the run-up only, before the patch is sampled; with wheel "
+                      "rigid motion it may act for the whole run. Critical for a "
+                      "mode of angular frequency w at "
                       "alpha = 2 w. Its dissipation enters "
                       "the energy balance.");
     prm.declare_entry("Run-up time",
                       "0",
                       Patterns::Double(0, 10),
                       "The run-up damping acts while t < this time [s], range [0, 10].");
+    prm.declare_entry("Run-up damping shape",
+                      "nodes",
+                      Patterns::Selection("nodes|wheel rigid motion"),
+                      "What the run-up damping acts on. nodes: every node's "
+                      "velocity relative to the wheelset's rigid motion (rail nodes: "
+                      "relative to rest); it damps all vibrations but also the "
+                      "rolling deformation convected through the patch. wheel rigid "
+                      "motion: only the rigid-motion part of the wheel's relative "
+                      "velocity in the rolling plane (its mass-weighted fit by x and "
+                      "z translation and rotation about the axle), f = -alpha m w(r): "
+                      "the wheel's motion on its web relative to the axle (the "
+                      "torsional mode that the onset of traction excites); a steadily "
+                      "rolling wheel has w = 0, so this damping may act while the "
+                      "patch is sampled (Run-up time = End time).");
     prm.declare_entry("Static start",
                       "true",
                       Patterns::Bool(),
@@ -192,6 +208,7 @@ namespace WheelRail
     creepage_control_time = prm.get_double("Creepage control time");
     runup_damping         = prm.get_double("Run-up damping");
     runup_time            = prm.get_double("Run-up time");
+    runup_damping_shape   = prm.get("Run-up damping shape");
     static_start          = prm.get_bool("Static start");
     prm.leave_subsection();
   }

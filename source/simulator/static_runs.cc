@@ -212,9 +212,17 @@ namespace WheelRail
         pcout << std::endl;
       }
     if (wp.runup_damping > 0 && wp.runup_time > 0)
-      pcout << "  run-up damping alpha = " << fmt(wp.runup_damping)
-            << " 1/s of the velocity relative to the wheelset's rigid motion until t = "
-            << fmt(wp.runup_time * 1e3) << " ms" << std::endl;
+      {
+        pcout << "  run-up damping alpha = " << fmt(wp.runup_damping) << " 1/s of "
+              << (wp.runup_damping_shape == "nodes" ?
+                    "the velocity relative to the wheelset's rigid motion" :
+                    "the wheel's rigid motion relative to the axle's");
+        if (wp.runup_time < parameters.solver.end_time)
+          pcout << " until t = " << fmt(wp.runup_time * 1e3) << " ms";
+        else
+          pcout << " for the whole run";
+        pcout << std::endl;
+      }
   }
 
 

@@ -297,44 +297,6 @@ namespace WheelRail
   }
 
 
-  double
-  ExplicitSolver::add_runup_damping(const double h, double &work)
-  {
-    const double          alpha = prm.wheelset.runup_damping;
-    const Point<dim>      axle  = wheelset->axle_position();
-    const Tensor<1, dim> &Va    = wheelset->axle_velocity();
-    const double          omega = wheelset->angular_velocity();
-    const double         *U     = u.begin();
-    const double         *V     = v.begin();
-    const double         *M     = mass.begin();
-    double               *F     = f.begin();
-    double                power = 0, rigid_power = 0;
-    for (unsigned int k = 0; k < u.locally_owned_size(); ++k)
-      {
-        // the rigid velocity V_a + omega e_y x r of the wheel at the node's
-        // current position (a node's x, y, z DoFs are contiguous), 0 on the rail
-        double vr = 0;
-        if (node_material[k] == Geometry::MaterialIds::wheel)
-          {
-            const unsigned int first = k - node_component[k];
-            if (node_component[k] == 0)
-              vr = Va[0] + omega * (node_points[k][2] + U[first + 2] - axle[2]);
-            else if (node_component[k] == 2)
-              vr = Va[2] - omega * (node_points[k][0] + U[first] - axle[0]);
-          }
-        const double fd = alpha * M[k] * (V[k] - vr);
-        F[k] += fd; // f has the sign of internal forces
-        power += fd * (V[k] - vr);
-        rigid_power -= fd * vr;
-      }
-    // the force's work on the rigid motion is exchanged with the frame that
-    // moves with the wheelset: external work, not dissipation
-    work = h * rigid_power;
-    return power;
-  }
-
-
-
   void
   ExplicitSolver::advance_wheelset(const double h)
   {

@@ -1,12 +1,21 @@
 #!/usr/bin/env bash
 # ctest driver of the coarse comparison with exact steady rolling theory:
 # prm/compare_coulomb.prm (Coulomb f = 0.5, creepage held at the half-space
-# creepage of F_x / F_N = 0.3, run-up damping) on 1.32 mm cells (four times
-# the paper's) with four times the paper's step, then
-# scripts/convergence_study.py --check on its patch at instant t against
-# Hertz and the half-space solution at the run's own F_N and F_x.
-# The limits are what this mesh resolves, with a margin of about a third
-# (doc/convergence.md gives the figures at h 1.32, 0.66 and 0.33 mm).
+# creepage of F_x / F_N = 0.3, run-up damping of the wheel's rigid motion for
+# the whole run) on 1.32 mm cells (four times the paper's) with four times
+# the paper's step, then scripts/convergence_study.py --check on its patch at
+# instant t against Hertz and the half-space solution at the run's own F_N
+# and F_x. The limits are what this mesh resolves, with a margin of about a
+# third (doc/convergence.md gives the figures at h 1.32, 0.66 and 0.33 mm).
+# Measured: p0 0.036, a 0.002, b 0.000, creep 0.022, slip 0.039, rms_p 0.028,
+# rms_q 0.034, spread 0.014.
+# spread: mu_a's (max - min) / mean over the last 20 mm; 0.040 with the
+# run-up damping on every node until 1.3 ms (the wheel's torsional mode,
+# released), so the limit of 0.025 fails if the damping of the wheel's rigid
+# motion stops acting. With that nodal damping the patch was sampled on the
+# upswing of the mode (mu_a 0.301 at t; 0.293 mean over the last 20 mm in the
+# same run at the paper's step) and met the half-space creepage within 0.001
+# by chance; steady, this mesh transmits 2 % less F_x at the held creepage.
 # stick: the slip-zone nodes' mean adhesion share over the 5.7 us window,
 # 0.000 with the paper cases' Contact damping 0.2, 0.019 without it (the
 # nodes ringing on their penalty springs stick in part of the steps;
@@ -16,5 +25,5 @@ set -euo pipefail
 exe=$1 src=$2
 bash "$(dirname "$0")/coarse_run.sh" "$exe" "$src/prm/compare_coulomb.prm"
 /usr/bin/python3 "$src/scripts/convergence_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
-  --nx 32 --ny 17 --check p0=0.06 a=0.02 b=0.02 creep=0.02 slip=0.04 rms_p=0.04 rms_q=0.05 spread=0.07 \
+  --nx 32 --ny 17 --check p0=0.06 a=0.02 b=0.02 creep=0.03 slip=0.05 rms_p=0.04 rms_q=0.05 spread=0.025 \
   stick=0.005

@@ -224,7 +224,10 @@ namespace WheelRail
     double creepage_control_time; ///< omega follows v_x (1 - xi_0) / r until then [s]
     double runup_damping;         ///< alpha of the run-up damping [1/s]
     double runup_time;            ///< the run-up damping acts until then [s]
-    bool   static_start;
+    /** "nodes" (each node's v - v_rigid) or "wheel rigid motion" (its
+     *  rigid-motion part over the wheel), see add_runup_damping() */
+    std::string runup_damping_shape;
+    bool        static_start;
 
     static void
     declare_parameters(ParameterHandler &prm);

@@ -1,0 +1,153 @@
+#include <deal.II/base/mpi.h>
+
+#include <wheelrail/mesh/geometry.h>
+#include <wheelrail/solver/explicit_solver.h>
+
+#include <array>
+
+namespace WheelRail
+{
+  // Wheelset/Run-up damping: a mass-proportional damping of the wheel's
+  // velocity relative to the rigid motion of the wheelset, in one of two
+  // shapes (Run-up damping shape):
+  //
+  // - nodes: every node's own relative velocity, f_i = alpha m_i (v_i - v_rigid,i)
+  //   (rail nodes: relative to rest). It damps every vibration, but also the
+  //   rolling deformation convected through the patch.
+  // - wheel rigid motion: only the part of the wheel's relative velocity
+  //   that is a rigid motion in the rolling plane (x and z translation,
+  //   rotation about y) measured against the steady motion: with V_c the
+  //   velocity of the wheel's centre of mass r_c and Omega = L_c / J_c its
+  //   mean angular velocity about it (the mass-weighted rigid fit),
+  //   w = (V_c - V_a) + (Omega - omega) e_y x (r - r_c) and
+  //   f_i = alpha m_i w(r_i). This is the wheel's motion on its web
+  //   relative to the axle (the torsional mode that the onset of traction
+  //   excites, and the rim's swaying in x and z). A steadily rolling wheel
+  //   has V_c = V_a, and Omega = omega up to terms of the order of the
+  //   deformation squared (the convected deformation's angular momentum
+  //   cancels to first order over the circumference), so the damping may
+  //   act while the patch is sampled. (A fit about the axle would not
+  //   vanish: the loaded wheel's centre of mass is off the axle by r_c,
+  //   and its rigid velocity there is V_a - omega e_y x r_c.)
+  //
+  // f has the sign of internal forces. The damping's work on the rigid
+  // motion, -sum f . v_rigid, is exchanged with the frame that moves with
+  // the wheelset (external work), the rest, sum f . (v - v_rigid), is
+  // dissipated.
+  double
+  ExplicitSolver::add_runup_damping(const double h, double &work)
+  {
+    const double          alpha = prm.wheelset.runup_damping;
+    const Point<dim>      axle  = wheelset->axle_position();
+    const Tensor<1, dim> &Va    = wheelset->axle_velocity();
+    const double          omega = wheelset->angular_velocity();
+    const double         *U     = u.begin();
+    const double         *V     = v.begin();
+    const double         *M     = mass.begin();
+    double               *F     = f.begin();
+    const unsigned int    n     = u.locally_owned_size();
+    const bool            rigid = prm.wheelset.runup_damping_shape == "wheel rigid motion";
+
+    // the node's position relative to the axle (x, z) and its rigid velocity
+    // V_a + omega e_y x r in the DoF's direction (a node's x, y, z DoFs are
+    // contiguous); 0 on the rail
+    const auto rigid_velocity = [&](const unsigned int k, double &rx, double &rz) {
+      const unsigned int first = k - node_component[k];
+      rx                       = node_points[k][0] + U[first] - axle[0];
+      rz                       = node_points[k][2] + U[first + 2] - axle[2];
+      if (node_component[k] == 0)
+        return Va[0] + omega * rz;
+      if (node_component[k] == 2)
+        return Va[2] - omega * rx;
+      return 0.;
+    };
+
+    // wheel rigid motion: the wheel's mass, centre of mass (relative to the
+    // axle), momentum, angular momentum and polar moment in the rolling
+    // plane, summed over the ranks; the damped velocity is
+    // w = (V_c - V_a) + (Omega - omega) e_y x (r - r_c)
+    double Vcx = 0, Vcz = 0, rcx = 0, rcz = 0, dOmega = 0;
+    if (rigid)
+      {
+        // mass (x DoFs), mass (z DoFs), sum m rz, sum m rx, sum m r^2,
+        // P_x, P_z, L_y = sum m (rz v_x - rx v_z)
+        std::array<double, 8> s = {{0, 0, 0, 0, 0, 0, 0, 0}};
+        for (unsigned int k = 0; k < n; ++k)
+          if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] != 1)
+            {
+              double rx, rz;
+              rigid_velocity(k, rx, rz);
+              if (node_component[k] == 0)
+                {
+                  s[0] += M[k];
+                  s[2] += M[k] * rz;
+                  s[4] += M[k] * rz * rz;
+                  s[5] += M[k] * V[k];
+                  s[7] += M[k] * rz * V[k];
+                }
+              else
+                {
+                  s[1] += M[k];
+                  s[3] += M[k] * rx;
+                  s[4] += M[k] * rx * rx;
+                  s[6] += M[k] * V[k];
+                  s[7] -= M[k] * rx * V[k];
+                }
+            }
+        std::array<double, 8> g;
+        Utilities::MPI::sum(ArrayView<const double>(s.data(), 8),
+                            mpi_communicator,
+                            ArrayView<double>(g.data(), 8));
+        if (g[0] > 0 && g[1] > 0)
+          {
+            rcz = g[2] / g[0];
+            rcx = g[3] / g[1];
+            Vcx = g[5] / g[0];
+            Vcz = g[6] / g[1];
+            // about the centre of mass
+            const double J = g[4] - g[2] * rcz - g[3] * rcx;
+            const double L = g[7] - (g[2] * Vcx - g[3] * Vcz);
+            if (J > 0)
+              dOmega = L / J - omega;
+          }
+      }
+
+    double power = 0, rigid_power = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const bool wheel = node_material[k] == Geometry::MaterialIds::wheel;
+        double     w = 0, vr = 0;
+        if (!rigid)
+          {
+            double rx, rz;
+            vr = wheel ? rigid_velocity(k, rx, rz) : 0.;
+            w  = V[k] - vr;
+          }
+        else if (wheel && node_component[k] != 1)
+          {
+            // the reference motion: the centre of mass with the axle,
+            // rotation omega about it
+            double rx, rz;
+            rigid_velocity(k, rx, rz);
+            if (node_component[k] == 0)
+              {
+                vr = Va[0] + omega * (rz - rcz);
+                w  = Vcx - Va[0] + dOmega * (rz - rcz);
+              }
+            else
+              {
+                vr = Va[2] - omega * (rx - rcx);
+                w  = Vcz - Va[2] - dOmega * (rx - rcx);
+              }
+          }
+        else
+          continue;
+        const double fd = alpha * M[k] * w;
+        F[k] += fd;
+        power += fd * (V[k] - vr);
+        rigid_power -= fd * vr;
+      }
+    work = h * rigid_power;
+    return power;
+  }
+} // namespace WheelRail
