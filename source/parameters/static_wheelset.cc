@@ -174,13 +174,14 @@ namespace WheelRail
                       "velocity relative to the wheelset's rigid motion (rail nodes: "
                       "relative to rest); it damps all vibrations but also the "
                       "rolling deformation convected through the patch. wheel rigid "
-                      "motion: only the rigid-motion part of the wheel's relative "
-                      "velocity in the rolling plane (its mass-weighted fit by x and "
-                      "z translation and rotation about the axle), f = -alpha m w(r): "
-                      "the wheel's motion on its web relative to the axle (the "
-                      "torsional mode that the onset of traction excites); a steadily "
-                      "rolling wheel has w = 0, so this damping may act while the "
-                      "patch is sampled (Run-up time = End time).");
+                      "motion: only the wheel's rigid motion in the rolling plane "
+                      "relative to the axle's, w = (V_c - V_a) + (Omega - omega) e_y x "
+                      "(r - r_c) with V_c the velocity of the wheel's centre of mass "
+                      "r_c and Omega its mean angular velocity about it (the "
+                      "mass-weighted rigid fit), f = -alpha m w(r): the wheel's motion "
+                      "on its web (the torsional mode that the onset of traction "
+                      "excites); a steadily rolling wheel has w = 0, so this damping "
+                      "may act while the patch is sampled (Run-up time = End time).");
     prm.declare_entry("Static start",
                       "true",
                       Patterns::Bool(),
