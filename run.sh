@@ -84,15 +84,24 @@ run_bench() {
   [ ${#counts[@]} -eq 0 ] && counts=(1 2)
   mkdir -p bench
   local csv=bench/results.csv
+  local header=date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms,triad_2core_gb_s,bytes_per_element_step
   if [ ! -f "$csv" ]; then
-    echo "date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms" > "$csv"
+    echo "$header" > "$csv"
+  elif ! head -1 "$csv" | grep -q bytes_per_element_step; then
+    sed -i "1s/.*/$header/" "$csv" # older rows leave the two new columns empty
   fi
   local commit cpu
   commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
   git diff --quiet 2>/dev/null || commit="$commit+changes"
   cpu=$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -1 | tr -d ',')
-  # what the step is measured against: this machine's FMA peak and bandwidth
-  "$top/build/machine_limits"
+  # what the step is measured against: this machine's FMA peak and its
+  # bandwidth on 2 cores, which turns ns per element-step into the bytes per
+  # element-step that a host of that bandwidth moves in that time (the measure
+  # that compares across hosts)
+  local limits triad
+  limits=$("$top/build/machine_limits" 2)
+  echo "$limits"
+  triad=$(echo "$limits" | sed -n 's/.*STREAM triad.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
   for np in "${counts[@]}"; do
     echo "run.sh: benchmark on $np rank(s)"
     if [ "$np" -gt 1 ]; then
@@ -102,7 +111,11 @@ run_bench() {
     fi
     local row
     row=$(grep -v '^#' results/bench/timing.csv | tail -1)
-    echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row" >> "$csv"
+    local ns bytes
+    ns=$(echo "$row" | cut -d, -f6)
+    bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
+    echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
+    echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes" >> "$csv"
   done
   echo "run.sh: benchmark figures appended to $top/$csv"
   { head -1 "$csv"; tail -n ${#counts[@]} "$csv"; } | cut -d, -f4- | column -s, -t || true
