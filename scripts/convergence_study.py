@@ -30,6 +30,9 @@ Usage:
         reused)
   convergence_study.py --work DIR [--variants ...] [--markdown FILE] [--figure PNG]
         compares the runs found there
+  convergence_study.py --work DIR --variants ... --creep-figure PNG
+        also plots the runs' mean mu_a over the last 20 mm against their
+        creepage on the half-space creep curve and prints the differences
   convergence_study.py --work DIR --variants ... --check p0=0.05 rms_q=0.1 ...
         also checks each run against limits and exits with status 1 if one is
         exceeded: p0, a, b (relative error from Hertz), L (relative error of
@@ -99,6 +102,8 @@ def analyse(directory, nx, ny):
     return dict(Fn=r["Fn"], Fx=r["Fx"], mu=r["Fx"] / r["Fn"], p0=p0, a=a, b=b, hertz=r["hertz"],
                 length=length,
                 mu_spread=(mu.max() - mu.min()) / abs(mu.mean()) if mu.size else float("nan"),
+                mu_window=(mu.mean(), mu.min(), mu.max()) if mu.size else (float("nan"),) * 3,
+                prm=prm,
                 creep=creep.mean() if creep.size else float("nan"),
                 creep_hs=r["creep_hs"], slip=r["slip_fe"], slip_hs=r["slip_hs"],
                 rms_p=r["rms_p"], rms_q=r["rms_q"], stick=stick, f=r["f_ref"], row_x=r["fe"]["x"],
@@ -236,6 +241,9 @@ def main():
     add_variant_arguments(parser, DEFAULT_VARIANTS)
     parser.add_argument("--markdown", help="write the table to this file")
     parser.add_argument("--figure", help="write the shear and pressure along y = 0 to this PNG")
+    parser.add_argument("--creep-figure", metavar="PNG",
+                        help="write the runs' mean mu_a against their creepage (last 20 mm) "
+                             "beside the half-space creep curve to this PNG")
     parser.add_argument("--check", nargs="+", metavar="NAME=LIMIT",
                         help="limits of the errors (names: " + ", ".join(CHECKS) + ")")
     args = parser.parse_args()
@@ -293,6 +301,48 @@ def main():
         fig.tight_layout()
         fig.savefig(args.figure, dpi=120)
         print(f"wrote {args.figure}")
+    if args.creep_figure:
+        creep_figure(results, args.creep_figure, (args.nx, args.ny))
+
+
+def creep_figure(results, path, grid):
+    """The runs' creep points (mean creepage and mean mu_a over the last 20 mm
+    before O, the bar mu_a's range there) on the half-space creep curve of
+    the first run's case at the runs' mean F_N; prints the differences."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fn = np.mean([r["Fn"] for _, r in results])
+    xis = [r["creep"] for _, r in results]
+    top = 1.25 * max(abs(x) for x in xis)
+    curve = hc.creep_curve(results[0][1]["prm"], fn, sorted(set(
+        [-top * k / 12 for k in range(13)] + xis)), grid)
+    at = {xi: ratio for xi, ratio, _ in curve}
+    print(f"creep curve (half-space at F_N {fn / 1e3:.2f} kN, {grid[0]} x {grid[1]} elements):")
+    print("| run | creepage [1e-3] | mu_a mean, last 20 mm (min, max) | half-space F_x / F_N | difference |")
+    print("|---|---|---|---|---|")
+    for label, r in results:
+        m, lo, hi = r["mu_window"]
+        ref = abs(at[r["creep"]])
+        print(f"| {label} | {r['creep'] * 1e3:.3f} | {m:.4f} ({lo:.4f}, {hi:.4f}) | {ref:.4f} | "
+              f"{100 * (m / ref - 1):+.1f} % |")
+    fig, ax = plt.subplots(figsize=(7, 4.8))
+    ax.plot([-c[0] * 1e3 for c in curve], [abs(c[1]) for c in curve], "k-", lw=2, alpha=0.6,
+            label=f"half-space, Coulomb f {results[0][1]['f']:g} ({grid[0]} x {grid[1]})")
+    for label, r in results:
+        m, lo, hi = r["mu_window"]
+        ax.errorbar([-r["creep"] * 1e3], [m], yerr=[[m - lo], [hi - m]], fmt="o", ms=5, capsize=3,
+                    label=f"{label}: mean over the last 20 mm (bar: range)")
+    ax.set_xlim(left=0)
+    ax.set_ylim(bottom=0)
+    ax.set_xlabel("-xi, rigid creepage [1e-3] (driving)")
+    ax.set_ylabel("F_x / F_N (FE: mu_a)")
+    ax.set_title(f"creep curve at F_N {fn / 1e3:.1f} kN: FE runs and exact steady rolling")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    print(f"wrote {path}")
 
 
 if __name__ == "__main__":
