@@ -424,7 +424,8 @@ def write_html(rep, run, other, prm, names, stats, hs_lines):
                                    ("balance error", 1, "")]:
             for i, n in enumerate(names):
                 if n.startswith(label):
-                    rows.append(("at the end: " + n, "%.6g %s" % (last[i] * scale, unit)))
+                    # the statistics column's SI unit is replaced by the one shown
+                    rows.append(("at the end: " + label, ("%.6g %s" % (last[i] * scale, unit)).strip()))
                     break
         half = stats[len(stats) // 2:]
         fn, fl = column(names, half, "F_N"), column(names, half, "F_L")
