@@ -22,8 +22,5 @@
 # doc/interface.md).
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
-exe=$1 src=$2
-bash "$(dirname "$0")/coarse_run.sh" "$exe" "$src/prm/compare_coulomb.prm"
-/usr/bin/python3 "$src/scripts/convergence_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
-  --nx 32 --ny 17 --check p0=0.06 a=0.02 b=0.02 creep=0.03 slip=0.05 rms_p=0.04 rms_q=0.05 spread=0.025 \
-  stick=0.005
+exec bash "$(dirname "$0")/coulomb_check.sh" "$1" "$2" prm/compare_coulomb.prm \
+  p0=0.06 a=0.02 b=0.02 creep=0.03 slip=0.05 rms_p=0.04 rms_q=0.05 spread=0.025 stick=0.005

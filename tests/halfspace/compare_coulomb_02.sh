@@ -13,8 +13,5 @@
 # 0.000), not explained (doc/convergence.md), with the same margin of a third.
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
-exe=$1 src=$2
-bash "$(dirname "$0")/coarse_run.sh" "$exe" "$src/prm/compare_coulomb_steady.prm"
-/usr/bin/python3 "$src/scripts/convergence_study.py" --work . --variants h1.32:0.00132:1.04e-7 \
-  --nx 32 --ny 17 --check p0=0.06 a=0.02 b=0.02 creep=0.03 slip=0.07 rms_p=0.04 rms_q=0.05 spread=0.012 \
-  stick=0.035
+exec bash "$(dirname "$0")/coulomb_check.sh" "$1" "$2" prm/compare_coulomb_steady.prm \
+  p0=0.06 a=0.02 b=0.02 creep=0.03 slip=0.07 rms_p=0.04 rms_q=0.05 spread=0.012 stick=0.035
