@@ -8,8 +8,8 @@
 #                               references hold whatever CPU built and runs it
 #   ./run.sh CASE.prm [-np N] [--resume]  same set-up, then run CASE.prm on N ranks
 #                               (default 2); --resume continues from its checkpoint
-#   ./run.sh bench [N ...]      same set-up, then the speed benchmark prm/bench_paper.prm
-#                               on 1 and 2 ranks (or the rank counts N given); figures
+#   ./run.sh bench [N ...]      same set-up, then the speed benchmarks prm/bench_paper.prm
+#                               and prm/bench_block.prm on 1 and 2 ranks (or the rank counts N given); figures
 #                               appended to bench/results.csv, after the machine's
 #                               measured FMA peak and memory bandwidth
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
@@ -77,18 +77,19 @@ run_case() {
   echo "run.sh: results are in $(cd "${dir:-results}" && pwd)/ (open solution.pvd in ParaView; statistics; probe.csv; parameters.prm)"
 }
 
-# The speed benchmark: prm/bench_paper.prm on each rank count, its
-# timing.csv row appended to bench/results.csv with the date, commit and CPU.
+# The speed benchmarks: prm/bench_paper.prm and prm/bench_block.prm on each
+# rank count, each timing.csv row appended to bench/results.csv with the date,
+# commit, CPU, the 2-core triad bandwidth, the bytes per element-step and the case.
 run_bench() {
   local counts=("$@")
   [ ${#counts[@]} -eq 0 ] && counts=(1 2)
   mkdir -p bench
   local csv=bench/results.csv
-  local header=date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms,triad_2core_gb_s,bytes_per_element_step
+  local header=date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms,triad_2core_gb_s,bytes_per_element_step,case
   if [ ! -f "$csv" ]; then
     echo "$header" > "$csv"
-  elif ! head -1 "$csv" | grep -q bytes_per_element_step; then
-    sed -i "1s/.*/$header/" "$csv" # older rows leave the two new columns empty
+  elif [ "$(head -1 "$csv")" != "$header" ]; then
+    sed -i "1s/.*/$header/" "$csv" # older rows (the paper case) leave the new columns empty
   fi
   local commit cpu
   commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
@@ -102,23 +103,28 @@ run_bench() {
   limits=$("$top/build/machine_limits" 2)
   echo "$limits"
   triad=$(echo "$limits" | sed -n 's/.*STREAM triad.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
-  for np in "${counts[@]}"; do
-    echo "run.sh: benchmark on $np rank(s)"
-    if [ "$np" -gt 1 ]; then
-      mpirun -np "$np" "$top/build/wheelrail" prm/bench_paper.prm | grep -v '^step'
-    else
-      "$top/build/wheelrail" prm/bench_paper.prm | grep -v '^step'
-    fi
-    local row
-    row=$(grep -v '^#' results/bench/timing.csv | tail -1)
-    local ns bytes
-    ns=$(echo "$row" | cut -d, -f6)
-    bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
-    echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
-    echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes" >> "$csv"
+  local case dir rows=0
+  for case in paper block; do
+    dir=results/bench
+    [ "$case" = block ] && dir=results/bench_block
+    for np in "${counts[@]}"; do
+      echo "run.sh: benchmark prm/bench_$case.prm on $np rank(s)"
+      if [ "$np" -gt 1 ]; then
+        mpirun -np "$np" "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step'
+      else
+        "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step'
+      fi
+      local row ns bytes
+      row=$(grep -v '^#' "$dir/timing.csv" | tail -1)
+      ns=$(echo "$row" | cut -d, -f6)
+      bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
+      echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
+      echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes,$case" >> "$csv"
+      rows=$((rows + 1))
+    done
   done
   echo "run.sh: benchmark figures appended to $top/$csv"
-  { head -1 "$csv"; tail -n ${#counts[@]} "$csv"; } | cut -d, -f4- | column -s, -t || true
+  { head -1 "$csv"; tail -n "$rows" "$csv"; } | cut -d, -f4- | column -s, -t || true
 }
 
 verb=${1:-default}
