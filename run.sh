@@ -9,9 +9,9 @@
 #   ./run.sh CASE.prm [-np N] [--resume]  same set-up, then run CASE.prm on N ranks
 #                               (default 2); --resume continues from its checkpoint
 #   ./run.sh bench [N ...]      same set-up, then the speed benchmarks prm/bench_paper.prm
-#                               and prm/bench_block.prm on 1 and 2 ranks (or the rank counts N given); figures
-#                               appended to bench/results.csv, after the machine's
-#                               measured FMA peak and memory bandwidth
+#                               and prm/bench_block.prm on 1 and 2 ranks (or the rank
+#                               counts N given); figures appended to bench/results.csv,
+#                               after the machine's measured FMA peak and memory bandwidth
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
 #                               directory (and the comparison with a second run) into DIR/plots,
 #                               with the half-space solution of the patch's load and traction

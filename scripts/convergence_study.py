@@ -33,6 +33,7 @@ Usage:
   convergence_study.py --work DIR --variants ... --creep-figure PNG
         also plots the runs' mean mu_a over the last 20 mm against their
         creepage on the half-space creep curve and prints the differences
+        (driving runs, xi < 0, as the comparison cases)
   convergence_study.py --work DIR --variants ... --check p0=0.05 rms_q=0.1 ...
         also checks each run against limits and exits with status 1 if one is
         exceeded: p0, a, b (relative error from Hertz), L (relative error of
