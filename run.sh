@@ -18,6 +18,10 @@
 #   ./run.sh sweep BASE.prm [options]  traction sweep over mu_n and friction laws with its
 #                               plots and the creep curve against the half-space one
 #                               (scripts/sweep.py --help)
+#   ./run.sh creep-curve CASE.prm [options]  creep-force table (F_x/F_N, slip area,
+#                               micro-slip against the creepage held) as CSV and HDF5
+#                               with its plot beside the half-space curve
+#                               (scripts/creep_curve.py --help)
 #   ./run.sh build              set-up and build only
 #   ./run.sh format             clang-format (.clang-format, deal.II's style) on every
 #                               tracked C++ file (installs Debian's clang-format)
@@ -160,13 +164,18 @@ case "$verb" in
     build
     /usr/bin/python3 scripts/sweep.py "$@"
     ;;
+  creep-curve)
+    shift
+    build
+    /usr/bin/python3 scripts/creep_curve.py "$@"
+    ;;
   bench)
     shift
     build
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -184,7 +193,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac
