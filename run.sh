@@ -138,10 +138,12 @@ case "$verb" in
     run_case prm/default.prm 2
     ;;
   test)
+    packages+=(chromium) # the report page's test renders it
     build
     ctest --test-dir build -j "$(nproc)" --output-on-failure
     ;;
   test-portable)
+    packages+=(chromium)
     build_generic
     ctest --test-dir build-generic -j "$(nproc)" --output-on-failure
     ;;

@@ -41,7 +41,6 @@ half-space solution; the exit status is 1 if not.
 Needs Debian's python3-numpy and python3-matplotlib (run with /usr/bin/python3).
 """
 import argparse
-import html
 import math
 import os
 import sys
@@ -55,6 +54,7 @@ import numpy as np  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 # scripts/hs_compare.py: the run's files by column name, the half-space comparison
 import hs_compare as hc  # noqa: E402
+import report_page  # noqa: E402  (scripts/report_page.py: the report page)
 from hs_compare import axis_rows, column, read_csv, read_parameters, read_patch, read_statistics  # noqa: E402
 
 INSTANTS = ["t-5.7us", "t", "t+5.7us"]
@@ -108,17 +108,15 @@ class Report:
         self.figures.append((name, caption, fig))
 
     def write_page(self, title, header):
-        """report.html: @p header (HTML lines), then every figure with its caption."""
-        body = list(header)
-        for name, caption, _ in self.figures:
-            body.append("<h2>%s</h2><img src='%s' style='max-width:100%%'>" % (html.escape(caption), name))
-        page = ("<!DOCTYPE html><html><head><meta charset='utf-8'><title>%s</title></head><body>\n%s\n"
-                "</body></html>\n" % (html.escape(title), "\n".join(body)))
+        """report.html: @p header (HTML lines), then every figure, embedded, with its caption."""
         path = os.path.join(self.out, "report.html")
         with open(path + ".tmp", "w") as f:
-            f.write(page)
+            f.write(report_page.page(title, header, self.figure_files()))
         os.replace(path + ".tmp", path)
         return path
+
+    def figure_files(self):
+        return [(os.path.join(self.out, name), caption) for name, caption, _ in self.figures]
 
     def exit_with_check(self, problems=()):
         """Print the figure check (and @p problems found elsewhere); exit 1 if any."""
@@ -402,46 +400,15 @@ def plot_run(run, other, out, hs_grid=hc.DEFAULT_GRID):
                 ax.set_xlabel("time [ms]")
         rep.save(fig, "histories.png", "Time histories: forces, mu_a, energies, node counts")
 
-    write_html(rep, run, other, prm, names, stats,
+    write_html(rep, run, other, prm, names, stats, comparison,
                hc.summary_lines(comparison) if comparison is not None else [hs_missing])
     return rep, comparison, hs_missing
 
 
-def write_html(rep, run, other, prm, names, stats, hs_lines):
-    rows = [("run", run)]
-    if other:
-        rows.append(("compared with", other))
-    for key in ["Contact/Friction law", "Contact/Static friction coefficient",
-                "Contact/Dynamic friction coefficient", "Wheelset/Nominal traction coefficient",
-                "Geometry/Mesh/Minimum cell size", "Time integration/Time step", "Time integration/End time"]:
-        if key in prm:
-            rows.append((key, prm[key]))
-    if stats is not None and len(stats):
-        last = stats[-1]
-        for label, scale, unit in [("time", 1e3, "ms"), ("wheel x", 1e3, "mm"), ("F_N", 1e-3, "kN"),
-                                   ("F_L", 1e-3, "kN"), ("mu_a", 1, ""), ("contact nodes", 1, ""),
-                                   ("slip nodes", 1, ""), ("trailing micro-slip", 1, "m/s"),
-                                   ("balance error", 1, "")]:
-            for i, n in enumerate(names):
-                if n.startswith(label):
-                    # the statistics column's SI unit is replaced by the one shown
-                    rows.append(("at the end: " + label, ("%.6g %s" % (last[i] * scale, unit)).strip()))
-                    break
-        half = stats[len(stats) // 2:]
-        fn, fl = column(names, half, "F_N"), column(names, half, "F_L")
-        if fn is not None and np.all(fn != 0):
-            rows.append(("mean mu_a over the second half", "%.4f" % (fl.mean() / fn.mean())))
-    timing = read_csv(os.path.join(run, "timing.csv"))
-    if timing is not None:
-        rows.append(("ns per element-step (wall)", "%.4g" % timing["ns_per_element_step"][0]))
-        rows.append(("peak memory per rank", "%.4g MB" % timing["peak_memory_mb"][0]))
-    header = ["<h1>wheelrail run report</h1>", "<table border='1' cellpadding='3'>"]
-    header += ["<tr><td>%s</td><td>%s</td></tr>" % (html.escape(k), html.escape(str(v))) for k, v in rows]
-    header.append("</table>")
-    header.append("<h2>Comparison with the half-space solution</h2><ul>")
-    header += ["<li>%s</li>" % html.escape(line) for line in hs_lines]
-    header.append("</ul>")
-    rep.write_page("wheelrail report", header)
+def write_html(rep, run, other, prm, names, stats, comparison, hs_lines):
+    patch = read_patch(run, "t") if comparison is not None else None
+    report_page.run_report(os.path.join(rep.out, "report.html"), run, other, prm, names, stats, patch,
+                           comparison, hs_lines, rep.figure_files(), column)
 
 
 def shows_half_space(rep, name):

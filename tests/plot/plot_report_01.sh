@@ -50,3 +50,33 @@ if /usr/bin/python3 "$src/scripts/plot.py" plot_bad --out plots_bad --check > ba
 fi
 grep -q "check failed: half-space comparison not made" bad.log
 grep "check failed" bad.log
+
+# The report page as a user sees it: rendered in headless Chromium (Debian's
+# chromium, installed by ./run.sh test), every embedded figure decoded (the
+# page's script counts them into <body data-figures="LOADED/TOTAL">), the
+# sections present, and the end values' labels carrying the units their
+# values are in (F_N in kN, as the statistics' N / 1000).
+command -v chromium > /dev/null || { echo "chromium is not installed (./run.sh test installs it)"; exit 1; }
+for page in plots plots2; do
+  chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=10000 \
+    --dump-dom "file://$PWD/$page/report.html" > $page.dom.html 2> $page.chromium.log
+done
+/usr/bin/python3 - <<'PY'
+import re
+for page, figures in (("plots", 8), ("plots2", 9)):
+    dom = open(page + ".dom.html").read()
+    m = re.search(r'data-figures="(\d+)/(\d+)"', dom)
+    assert m, "%s: the page's script did not run in Chromium" % page
+    print("%s/report.html in Chromium: %s of %s figures decoded (expected %d)" % (page, m.group(1), m.group(2), figures))
+    assert m.group(1) == m.group(2) == str(figures), "figures missing or not decoded"
+    for section in ("What was run", "Key figures at t against exact theory", "What to trust in this run",
+                    "At the end of the run", "Figures"):
+        assert "<h2>%s</h2>" % section in dom, "%s: section '%s' missing" % (page, section)
+stats = [l.split() for l in open("plot_run/statistics") if not l.startswith("#")]
+names = [l.split(":", 1)[1].strip() for l in open("plot_run/statistics") if re.match(r"# \d+:", l)]
+fn = float(stats[-1][[i for i, n in enumerate(names) if n.startswith("F_N")][0]])
+m = re.search(r"<td>F_N \[kN\]</td><td class=\"num\">([^<]+)</td>", open("plots.dom.html").read())
+assert m, "no F_N [kN] row at the end"
+print("end F_N: page %s kN, statistics %.6g N" % (m.group(1), fn))
+assert abs(float(m.group(1)) - fn * 1e-3) <= 1e-5 * abs(fn * 1e-3), "F_N [kN] row does not show kN"
+PY
