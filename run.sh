@@ -138,12 +138,12 @@ case "$verb" in
     run_case prm/default.prm 2
     ;;
   test)
-    packages+=(chromium) # the report page's test renders it
+    packages+=(chromium python3-vtk9) # the report page is rendered, the VTU files read back
     build
     ctest --test-dir build -j "$(nproc)" --output-on-failure
     ;;
   test-portable)
-    packages+=(chromium)
+    packages+=(chromium python3-vtk9)
     build_generic
     ctest --test-dir build-generic -j "$(nproc)" --output-on-failure
     ;;

@@ -150,11 +150,7 @@ namespace WheelRail
   {
     const Pass               &first = passes.front();
     std::vector<NodalContact> nodes(node_dof.size());
-    std::vector<bool>         is_master(node_dof.size(), false);
-    for (const auto &face : first.faces)
-      for (unsigned int v = 0; v < 4; ++v)
-        is_master[face.node[v]] = true;
-    const double eps_t = adhesion_tolerance(0);
+    const double              eps_t = adhesion_tolerance(0);
     for (const unsigned int s : first.candidate_slaves)
       {
         const ContactNodeState &state = first.slaves[s];
@@ -188,19 +184,52 @@ namespace WheelRail
           }
       }
     std::vector<NodalContact> result;
+    for (const unsigned int n : master_order())
+      {
+        NodalContact node = nodes[n];
+        node.X            = node_X[n];
+        node.x            = node_X[n];
+        node.area         = node_area[n];
+        normalise(node);
+        result.push_back(node);
+      }
+    return result;
+  }
+
+
+
+  std::vector<unsigned int>
+  PenaltyContact::master_order() const
+  {
+    std::vector<bool> is_master(node_dof.size(), false);
+    for (const auto &face : passes.front().faces)
+      for (unsigned int v = 0; v < 4; ++v)
+        is_master[face.node[v]] = true;
+    std::vector<unsigned int> order;
     for (unsigned int n = 0; n < node_dof.size(); ++n)
       if (is_master[n])
-        {
-          NodalContact node = nodes[n];
-          node.X            = node_X[n];
-          node.x            = node_X[n];
-          node.area         = node_area[n];
-          normalise(node);
-          result.push_back(node);
-        }
-    std::sort(result.begin(), result.end(), [](const auto &a, const auto &b) {
-      return ContactGeometry::lexicographic_less(a.X, b.X);
+        order.push_back(n);
+    std::sort(order.begin(), order.end(), [this](const unsigned int a, const unsigned int b) {
+      return ContactGeometry::lexicographic_less(node_X[a], node_X[b]);
     });
-    return result;
+    return order;
+  }
+
+
+
+  std::vector<std::array<unsigned int, 4>>
+  PenaltyContact::master_face_nodes() const
+  {
+    const std::vector<unsigned int> order = master_order();
+    std::vector<unsigned int>       position(node_dof.size(), numbers::invalid_unsigned_int);
+    for (unsigned int i = 0; i < order.size(); ++i)
+      position[order[i]] = i;
+    std::vector<std::array<unsigned int, 4>> faces;
+    for (const auto &face : passes.front().faces)
+      faces.push_back({{position[face.node[0]],
+                        position[face.node[1]],
+                        position[face.node[2]],
+                        position[face.node[3]]}});
+    return faces;
   }
 } // namespace WheelRail

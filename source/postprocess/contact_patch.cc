@@ -215,7 +215,7 @@ namespace WheelRail
     const GeometryParameters &g       = access.parameters.geometry;
     const PenaltyContact     &contact = *access.contact;
     const auto                states  = contact.master_node_results();
-    std::ostringstream        csv, vtu_points, vtu_data[6];
+    std::ostringstream        csv;
     csv << std::setprecision(9) << "# contact patch at " << name << " (t = " << access.solver.time()
         << " s, patch centre x = " << centre << " m): rail-top nodes of the solution zone; SI "
         << "units; F_n, shear: the forces of "
@@ -229,7 +229,7 @@ namespace WheelRail
            "0.5\n"
         << "x,y,in_contact,pressure,shear_x,shear,slip_velocity,cof,adhesion_eq5,slip_eq6,"
            "F_n,area,adhesion_share,slip_share\n";
-    unsigned int n_points = 0, n_contact = 0, n_slip = 0;
+    unsigned int n_contact = 0, n_slip = 0;
     double       p_max = 0, s_max = 0, x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
     std::vector<Verification::PatchNode> patch;
     for (const NodalContact &m : states)
@@ -245,16 +245,6 @@ namespace WheelRail
             << m.tangential_force[0] / m.area << ',' << shear << ',' << m.slip_velocity << ','
             << m.cof << ',' << adhere << ',' << m.slip_eq6() << ',' << m.normal_force << ','
             << m.area << ',' << m.adhesion_share << ',' << m.slip_share << '\n';
-        vtu_points << m.X[0] << ' ' << m.X[1] << ' ' << m.X[2] << '\n';
-        const double values[6] = {p,
-                                  m.tangential_force[0] / m.area,
-                                  shear,
-                                  m.slip_velocity,
-                                  m.cof,
-                                  double(in) + double(in && !adhere)};
-        for (unsigned int k = 0; k < 6; ++k)
-          vtu_data[k] << values[k] << '\n';
-        ++n_points;
         if (in)
           {
             patch.push_back({m.X[0], m.X[1], p, m.normal_force});
@@ -270,35 +260,7 @@ namespace WheelRail
       }
     access.write_file("patch_" + name + ".csv", csv.str());
 
-    // the same nodes as VTU points for ParaView
-    std::ostringstream vtu;
-    vtu << std::setprecision(9)
-        << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-        << "<UnstructuredGrid><Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\""
-        << n_points << "\">\n<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-        << "format=\"ascii\">\n"
-        << vtu_points.str() << "</DataArray></Points>\n<Cells>\n"
-        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (unsigned int i = 0; i < n_points; ++i)
-      vtu << i << '\n';
-    vtu << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (unsigned int i = 0; i < n_points; ++i)
-      vtu << i + 1 << '\n';
-    vtu << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (unsigned int i = 0; i < n_points; ++i)
-      vtu << "1\n";
-    vtu << "</DataArray>\n</Cells>\n<PointData>\n";
-    const char *names[6] = {"pressure_Pa",
-                            "shear_x_Pa",
-                            "shear_Pa",
-                            "slip_velocity_m_s",
-                            "cof",
-                            "state_0free_1adhesion_2slip"};
-    for (unsigned int k = 0; k < 6; ++k)
-      vtu << "<DataArray type=\"Float64\" Name=\"" << names[k] << "\" format=\"ascii\">\n"
-          << vtu_data[k].str() << "</DataArray>\n";
-    vtu << "</PointData>\n</Piece></UnstructuredGrid>\n</VTKFile>\n";
-    access.write_file("patch_" + name + ".vtu", vtu.str());
+    write_patch_surface(access, states, "patch_" + name + ".vtu");
 
     if (access.robust_output_only())
       return;

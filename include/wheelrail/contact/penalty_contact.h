@@ -34,6 +34,7 @@
 #include <wheelrail/contact/friction_model.h>
 #include <wheelrail/parameters/parameters.h>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -235,6 +236,10 @@ namespace WheelRail
      */
     std::vector<NodalContact>
     master_node_results() const;
+    /** The master faces of the first pass (the rail top): the indices of
+     *  each face's four nodes (lexicographic) in master_node_results(). */
+    std::vector<std::array<unsigned int, 4>>
+    master_face_nodes() const;
     /** The tolerance eps_T of eq. 5 for the slaves of pass @p p: 0.3 % of
      *  their largest |F_t| [N]. */
     double
@@ -373,6 +378,10 @@ namespace WheelRail
       unsigned int corner;
     };
 
+    /** The contact-node indices of the first pass's master nodes, in the
+     *  order of master_node_results() (by position). */
+    std::vector<unsigned int>
+    master_order() const;
     void
     collect_pass(const DoFHandler<dim>   &dof_handler,
                  const types::boundary_id slave_id,

@@ -31,9 +31,22 @@ namespace WheelRail
   write_contact_nodes(const SimulatorAccess &access, const std::string &name);
 
   /**
+   * The contact fields of @p nodes (master_node_results()) on the rail-top
+   * faces of the solution zone as a surface mesh: OUTDIR/@p file_name, a
+   * VTU of quadrilaterals with the point data pressure, shear (vector),
+   * micro-slip s_n, slip rate de/dt (vector), COF, state (0 free,
+   * 1 adhesion, 2 slip), adhesion and slip shares.
+   */
+  void
+  write_patch_surface(const SimulatorAccess           &access,
+                      const std::vector<NodalContact> &nodes,
+                      const std::string               &file_name);
+
+  /**
    * Contact-patch snapshots at the instants of SPEC 5.5: when the patch
    * centre passes x = -V dt_s, 0, +V dt_s (dt_s = 5.7 us), the rail-top
-   * nodes of the solution zone as patch_NAME.csv and patch_NAME.vtu; with
+   * nodes of the solution zone as patch_NAME.csv and, on the rail-top
+   * faces, patch_NAME.vtu (write_patch_surface()); with
    * Output/Patch averaging window > 0, the time means over that window
    * centred on each instant as patch_NAME_mean.csv.
    * Active with a wheelset and contact.
