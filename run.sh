@@ -30,7 +30,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 top=$(pwd)
 
-packages=(cmake ninja-build g++ make perl libdeal.ii-dev numdiff openmpi-bin
+packages=(cmake ninja-build g++ make perl libdeal.ii-dev libeigen3-dev numdiff openmpi-bin
           python3 python3-numpy python3-matplotlib python3-h5py)
 
 install_missing_packages() {

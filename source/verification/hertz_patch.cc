@@ -1,6 +1,3 @@
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
-
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/hertz.h>
 #include <wheelrail/verification/hertz_patch.h>
@@ -8,6 +5,9 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <vector>
+
+#include <Eigen/Dense>
 
 namespace WheelRail
 {
@@ -32,24 +32,27 @@ namespace WheelRail
       if (fit.n_contact == 0)
         return fit;
       fit.xc /= fit.force;
-      FullMatrix<double> M(3, 3);
-      Vector<double>     rhs(3), c(3);
+      // least squares p^2 = c0 + c1 (x - xc)^2 + c2 y^2 by a column-pivoting
+      // QR of the design matrix: its columns differ in scale by about 1e5
+      // (1 and squares of mm in m), which the normal equations would square
+      std::vector<const PatchNode *> used;
       for (const PatchNode &n : nodes)
         if (n.pressure > 0 && n.pressure >= 0.25 * fit.p_max)
-          {
-            const double phi[3] = {1., (n.x - fit.xc) * (n.x - fit.xc), n.y * n.y};
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                rhs(i) += phi[i] * n.pressure * n.pressure;
-                for (unsigned int j = 0; j < 3; ++j)
-                  M(i, j) += phi[i] * phi[j];
-              }
-          }
-      M.gauss_jordan();
-      M.vmult(c, rhs);
-      fit.p0 = std::sqrt(c(0));
-      fit.a  = std::sqrt(-c(0) / c(1));
-      fit.b  = std::sqrt(-c(0) / c(2));
+          used.push_back(&n);
+      Eigen::MatrixXd A(used.size(), 3);
+      Eigen::VectorXd rhs(used.size());
+      for (unsigned int k = 0; k < used.size(); ++k)
+        {
+          const PatchNode &n = *used[k];
+          A(k, 0)            = 1.;
+          A(k, 1)            = (n.x - fit.xc) * (n.x - fit.xc);
+          A(k, 2)            = n.y * n.y;
+          rhs(k)             = n.pressure * n.pressure;
+        }
+      const Eigen::Vector3d c = A.colPivHouseholderQr().solve(rhs);
+      fit.p0                  = std::sqrt(c(0));
+      fit.a                   = std::sqrt(-c(0) / c(1));
+      fit.b                   = std::sqrt(-c(0) / c(2));
       return fit;
     }
 
