@@ -80,10 +80,9 @@ def strongest(f, amplitude, above):
 
 def probe_analysis(run, names, stats, length):
     """The wheel probe's tangential velocities over the last @p length of rolling."""
-    path = os.path.join(run, "wheel_probe.csv")
-    if not os.path.exists(path):
+    pr = hc.read_probe(run, "wheel_probe")
+    if pr is None:
         return None
-    pr = hc.read_csv(path)
     t = pr["t [s]"]
     x_w = np.interp(t, hc.column(names, stats, "time"), hc.column(names, stats, "wheel x"))
     use = x_w >= x_w[-1] - length

@@ -6,9 +6,11 @@ theory of steady rolling) of the same load and traction.
 Shared by plot.py (overlays on Figs. 4 and 10, the RMS lines), sweep.py (the
 creep curve) and convergence_study.py (the mesh and time-step study):
 
-  read_parameters, read_statistics, column, read_csv, read_patch,
-  patch_header, axis_rows   the run's files: parameters.prm, statistics
-                            (deal.II TableHandler text), patch_*.csv
+  read_parameters, read_statistics, column, read_csv, read_probe,
+  read_patch, patch_header, axis_rows
+                            the run's files: parameters.prm, statistics
+                            (deal.II TableHandler text), the probes
+                            (series.h5, or the CSV files), patch_*.csv
   compare_patch             the patch at an instant against the half-space
                             solution at the patch's own F_N and F_x: the
                             solution along y = 0, the RMS differences of
@@ -116,6 +118,22 @@ def read_csv(name):
     header = [h.strip() for h in lines[0].split(",")]
     data = np.array([[float(v) for v in l.split(",")] for l in lines[1:] if l.strip()])
     return {h: data[:, i] for i, h in enumerate(header)}
+
+
+def read_probe(run, name):
+    """The history of probe NAME ('probe', 'wheel_probe') as {column: array}:
+    from RUN/series.h5 (/probes/NAME, h5py) if the run wrote it, else from
+    RUN/NAME.csv; None if neither exists."""
+    series = os.path.join(run, "series.h5")
+    if os.path.exists(series):
+        import h5py
+        with h5py.File(series, "r") as f:
+            if "probes/" + name in f:
+                d = f["probes/" + name]
+                columns = [c.decode() if isinstance(c, bytes) else c for c in d.attrs["columns"]]
+                data = d[()]
+                return {c: data[:, i] for i, c in enumerate(columns)}
+    return read_csv(os.path.join(run, name + ".csv"))
 
 
 def patch_file(run, instant):

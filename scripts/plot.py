@@ -55,7 +55,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 # scripts/hs_compare.py: the run's files by column name, the half-space comparison
 import hs_compare as hc  # noqa: E402
 import report_page  # noqa: E402  (scripts/report_page.py: the report page)
-from hs_compare import axis_rows, column, read_csv, read_parameters, read_patch, read_statistics  # noqa: E402
+from hs_compare import axis_rows, column, read_parameters, read_patch, read_statistics  # noqa: E402
 
 INSTANTS = ["t-5.7us", "t", "t+5.7us"]
 
@@ -294,9 +294,9 @@ def plot_run(run, other, out, hs_grid=hc.DEFAULT_GRID):
                  "Micro-slip along the longitudinal axis (paper Fig. 10), with the half-space slip velocity")
 
     # Figs. 8, 9: velocity histories and their spectra
-    probes = [(os.path.join(run, "probe.csv"), "rail-top node at O"),
-              (os.path.join(run, "wheel_probe.csv"), "wheel node passing O")]
-    probes = [(read_csv(n), label) for n, label in probes if os.path.exists(n)]
+    probes = [(hc.read_probe(run, n), label) for n, label in (("probe", "rail-top node at O"),
+                                                               ("wheel_probe", "wheel node passing O"))]
+    probes = [(pr, label) for pr, label in probes if pr is not None]
     if probes and stats is not None:
         fig, axes = plt.subplots(len(probes), 1, figsize=(8, 3.2 * len(probes)), squeeze=False)
         sfig, saxes = plt.subplots(len(probes), 1, figsize=(8, 3.2 * len(probes)), squeeze=False)

@@ -11,6 +11,19 @@
 
 namespace WheelRail
 {
+  std::vector<double>
+  StatisticsTable::values(const std::string &key) const
+  {
+    std::vector<double> v;
+    const auto          column = columns.find(key);
+    if (column != columns.end())
+      for (const auto &entry : column->second.entries)
+        v.push_back(entry.get_numeric_value());
+    return v;
+  }
+
+
+
   Statistics::Statistics(const SimulatorAccess &access, const EnergyBalance &balance)
     : access(access)
     , balance(balance)
@@ -107,7 +120,7 @@ namespace WheelRail
         std::ostringstream stream;
         {
           boost::archive::binary_oarchive archive(stream);
-          archive << table;
+          archive << static_cast<const TableHandler &>(table);
         }
         bytes = stream.str();
       }
@@ -116,7 +129,7 @@ namespace WheelRail
       {
         std::istringstream              stream(bytes);
         boost::archive::binary_iarchive archive(stream);
-        archive >> table;
+        archive >> static_cast<TableHandler &>(table);
       }
   }
 

@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/mesh/geometry.h>
+#include <wheelrail/postprocess/series_hdf5.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 #include <wheelrail/verification/checks.h>
@@ -194,6 +195,7 @@ namespace WheelRail
   {
     statistics->write_files();
     probes->write_files();
+    write_series_hdf5(*access, *statistics, *probes);
     if (contact)
       write_contact_nodes(*access, "contact_nodes.csv");
   }
@@ -219,6 +221,7 @@ namespace WheelRail
       {
         statistics->write_files();
         probes->write_files();
+        write_series_hdf5(*access, *statistics, *probes);
         write_checkpoint();
         last_checkpoint = Clock::now();
       }

@@ -11,8 +11,26 @@
 #include <wheelrail/postprocess/energy_balance.h>
 #include <wheelrail/postprocess/postprocessor.h>
 
+#include <string>
+#include <vector>
+
 namespace WheelRail
 {
+  /** deal.II's TableHandler with its numbers readable by column. */
+  class StatisticsTable : public TableHandler
+  {
+  public:
+    /** The column keys in their order. */
+    const std::vector<std::string> &
+    keys() const
+    {
+      return column_order;
+    }
+    /** The values of column @p key, one per row. */
+    std::vector<double>
+    values(const std::string &key) const;
+  };
+
   /** The statistics table; the balance columns come from @p balance, which
    *  must have executed the same step before. */
   class Statistics : public Postprocessor
@@ -32,6 +50,13 @@ namespace WheelRail
     save(Checkpoint::Writer &out) override;
     void
     load(Checkpoint::Reader &in) override;
+    /** The rows so far. */
+    const StatisticsTable &
+    rows() const
+    {
+      return table;
+    }
+
     /** The table as one string (TableHandler's boost serialization). */
     template <class Archive>
     void
@@ -43,7 +68,7 @@ namespace WheelRail
 
     const SimulatorAccess &access;
     const EnergyBalance   &balance;
-    TableHandler           table;
+    StatisticsTable        table;
   };
 } // namespace WheelRail
 
