@@ -57,6 +57,14 @@ namespace WheelRail
                       "into patch_NAME_mean.csv (pressure, shear, s_n, adhesion and "
                       "slip fractions), range [0, 1e-3]; 0 = no means. The paper's "
                       "sampling interval is 5.7e-6 s.");
+    prm.declare_entry("Patch series interval",
+                      "0",
+                      Patterns::Integer(0, 1000000000),
+                      "Every this many steps the contact fields on the rail-top "
+                      "surface of the solution zone are appended to "
+                      "patch_series.h5, which patch_series.xdmf lists for "
+                      "ParaView (a movie of the patch), range [0, 1e9]; 0 = none. "
+                      "The paper's 175 kHz sampling is every 219 steps of 2.6e-8 s.");
     prm.declare_entry("Probe point",
                       "0, 0, 0",
                       vector_pattern(),
@@ -122,19 +130,20 @@ namespace WheelRail
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    report_interval     = prm.get_integer("Report interval");
-    statistics_interval = prm.get_integer("Statistics interval");
-    vtu_interval        = prm.get_integer("VTU interval");
-    vtu_compression     = prm.get("VTU compression");
-    patch_window        = prm.get_double("Patch averaging window");
-    probe_point         = Point<3>(get_vector(prm, "Probe point"));
-    probe_component     = prm.get_integer("Probe component");
-    timing_warmup_steps = prm.get_integer("Timing warm-up steps");
-    divergence_limit    = prm.get_double("Divergence limit");
-    checkpoint_interval = prm.get_integer("Checkpoint interval");
-    checkpoint_minutes  = prm.get_double("Checkpoint minutes");
-    stop_after_step     = prm.get_integer("Stop after step");
-    resume              = prm.get_bool("Resume");
+    report_interval       = prm.get_integer("Report interval");
+    statistics_interval   = prm.get_integer("Statistics interval");
+    vtu_interval          = prm.get_integer("VTU interval");
+    vtu_compression       = prm.get("VTU compression");
+    patch_window          = prm.get_double("Patch averaging window");
+    patch_series_interval = prm.get_integer("Patch series interval");
+    probe_point           = Point<3>(get_vector(prm, "Probe point"));
+    probe_component       = prm.get_integer("Probe component");
+    timing_warmup_steps   = prm.get_integer("Timing warm-up steps");
+    divergence_limit      = prm.get_double("Divergence limit");
+    checkpoint_interval   = prm.get_integer("Checkpoint interval");
+    checkpoint_minutes    = prm.get_double("Checkpoint minutes");
+    stop_after_step       = prm.get_integer("Stop after step");
+    resume                = prm.get_bool("Resume");
     prm.leave_subsection();
   }
 

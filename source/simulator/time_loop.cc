@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/mesh/geometry.h>
+#include <wheelrail/postprocess/patch_series.h>
 #include <wheelrail/postprocess/series_hdf5.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
@@ -99,6 +100,7 @@ namespace WheelRail
     // check, then what takes the energies of a statistics step.
     probes        = add(std::make_unique<Probes>(*access));
     contact_patch = add(std::make_unique<ContactPatch>(*access));
+    add(std::make_unique<PatchSeries>(*access));
     divergence =
       add(std::make_unique<DivergenceCheck>(*access, *energy_balance, [this] { write_records(); }));
     add(std::move(balance));

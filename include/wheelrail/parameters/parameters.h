@@ -272,8 +272,9 @@ namespace WheelRail
     unsigned int  report_interval;
     unsigned int  statistics_interval;
     unsigned int  vtu_interval;
-    std::string   vtu_compression; ///< "fast", "best" or "none"
-    double        patch_window;    ///< window of the patch means [s], 0 = none
+    std::string   vtu_compression;       ///< "fast", "best" or "none"
+    double        patch_window;          ///< window of the patch means [s], 0 = none
+    unsigned int  patch_series_interval; ///< steps between patch-series frames, 0 = none
     Point<3>      probe_point;
     unsigned int  probe_component;
     unsigned int  timing_warmup_steps;

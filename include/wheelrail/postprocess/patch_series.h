@@ -1,0 +1,67 @@
+/**
+ * @file postprocess/patch_series.h
+ * The contact patch as a time series: OUTDIR/patch_series.h5 and
+ * OUTDIR/patch_series.xdmf (ParaView plays it as a movie).
+ */
+#ifndef wheelrail_postprocess_patch_series_h
+#define wheelrail_postprocess_patch_series_h
+
+#include <wheelrail/postprocess/postprocessor.h>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace WheelRail
+{
+  /**
+   * Every Output/Patch series interval steps (with a wheelset and contact),
+   * the contact fields on the rail-top surface of the solution zone (the
+   * mesh of write_patch_surface()): /mesh/points (nodes x 3, m),
+   * /mesh/quads (faces x 4, node indices), /mesh/area (the nodes'
+   * tributary areas, m^2), /time (frames) and per frame /fields/NAME
+   * (frames x nodes, or x 3 for vectors, single precision): pressure_Pa,
+   * shear_Pa, slip_velocity_m_s, slip_rate_m_s, cof,
+   * state_0free_1adhesion_2slip. Rank 0 writes (the contact state is
+   * replicated); each frame is flushed, and patch_series.xdmf (rewritten
+   * atomically) lists the frames for ParaView.
+   *
+   * Frame k is step (k + 1) N - 1, so a resumed run knows how many frames
+   * its checkpoint had: it reopens the file, cuts it to them and goes on.
+   */
+  class PatchSeries : public Postprocessor
+  {
+  public:
+    explicit PatchSeries(const SimulatorAccess &access);
+    ~PatchSeries() override;
+
+    void
+    execute(const StepInfo &step) override;
+
+    /** No state of its own in the checkpoint: the frames follow from the
+     *  step, and the file holds them. */
+    void
+    save(Checkpoint::Writer &) override
+    {}
+    void
+    load(Checkpoint::Reader &) override
+    {}
+
+  private:
+    /** Create the file with the mesh (frame 0) or reopen it and cut it to
+     *  @p frames frames (a resumed run). */
+    void
+    open(const unsigned long frames);
+    void
+    write_xdmf() const;
+
+    const SimulatorAccess    &access;
+    std::int64_t              file     = -1; ///< the HDF5 file (hid_t)
+    unsigned long             n_frames = 0;
+    std::vector<unsigned int> zone_nodes; ///< indices in master_node_results()
+    unsigned int              n_quads = 0;
+    std::vector<double>       times;
+  };
+} // namespace WheelRail
+
+#endif

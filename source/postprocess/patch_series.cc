@@ -1,0 +1,325 @@
+#include <deal.II/base/mpi.h>
+
+#include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/postprocess/output_files.h>
+#include <wheelrail/postprocess/patch_series.h>
+
+#include <hdf5.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+namespace WheelRail
+{
+  namespace
+  {
+    const std::string file_name = "patch_series.h5";
+
+    void
+    check(const long status, const std::string &what)
+    {
+      AssertThrow(status >= 0,
+                  ExcMessage("HDF5 could not " + what + " in " + file_name +
+                             " (disk full, not writable, or on a resume a file that is not "
+                             "this run's?)."));
+    }
+
+    /** (name, components) of the fields, in the order of values() */
+    const std::vector<std::pair<std::string, unsigned int>> fields = {
+      {"pressure_Pa", 1},
+      {"shear_Pa", 3},
+      {"slip_velocity_m_s", 1},
+      {"slip_rate_m_s", 3},
+      {"cof", 1},
+      {"state_0free_1adhesion_2slip", 1}};
+
+    /** Field @p f of node @p m into @p v (components). */
+    void
+    values(const unsigned int f, const NodalContact &m, float *v)
+    {
+      switch (f)
+        {
+          case 0:
+            v[0] = m.pressure();
+            break;
+          case 1:
+            for (unsigned int d = 0; d < dim; ++d)
+              v[d] = m.area > 0 ? m.tangential_force[d] / m.area : 0.;
+            break;
+          case 2:
+            v[0] = m.slip_velocity;
+            break;
+          case 3:
+            for (unsigned int d = 0; d < dim; ++d)
+              v[d] = m.slip_rate[d];
+            break;
+          case 4:
+            v[0] = m.cof;
+            break;
+          default:
+            v[0] = double(m.in_contact()) + double(m.in_contact() && !m.adhesion());
+        }
+    }
+
+    /** A dataset of @p dims (rank 1-3) of @p type, the first dimension
+     *  unlimited if @p extendable, chunked by one frame, gzip. */
+    hid_t
+    create(const hid_t                 parent,
+           const std::string          &name,
+           const std::vector<hsize_t> &dims,
+           const hid_t                 type,
+           const bool                  extendable)
+    {
+      std::vector<hsize_t> maxdims = dims, chunk = dims;
+      if (extendable)
+        {
+          maxdims[0] = H5S_UNLIMITED;
+          chunk[0]   = 1;
+        }
+      for (hsize_t &c : chunk)
+        c = std::max<hsize_t>(c, 1);
+      const hid_t space      = H5Screate_simple(dims.size(), dims.data(), maxdims.data());
+      const hid_t properties = H5Pcreate(H5P_DATASET_CREATE);
+      check(H5Pset_chunk(properties, chunk.size(), chunk.data()), "chunk " + name);
+      check(H5Pset_deflate(properties, 4), "compress " + name);
+      check(H5Pset_obj_track_times(properties, false), "switch off time stamps");
+      const hid_t set =
+        H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, properties, H5P_DEFAULT);
+      check(set, "create " + name);
+      H5Pclose(properties);
+      H5Sclose(space);
+      return set;
+    }
+
+    /** Append row @p k (dims[1:] from @p data) to the extendable dataset @p name. */
+    void
+    append(const hid_t        file,
+           const std::string &name,
+           const hid_t        type,
+           const void        *data,
+           const hsize_t      k)
+    {
+      const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+      check(set, "open " + name);
+      hid_t     space = H5Dget_space(set);
+      hsize_t   dims[3];
+      const int rank = H5Sget_simple_extent_ndims(space);
+      H5Sget_simple_extent_dims(space, dims, nullptr);
+      H5Sclose(space);
+      dims[0] = k + 1;
+      check(H5Dset_extent(set, dims), "extend " + name);
+      space            = H5Dget_space(set);
+      hsize_t start[3] = {k, 0, 0}, count[3] = {1, dims[1], rank > 2 ? dims[2] : 1};
+      check(H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr),
+            "select a frame of " + name);
+      const hid_t memory = H5Screate_simple(rank, count, nullptr);
+      check(H5Dwrite(set, type, memory, space, H5P_DEFAULT, data), "write " + name);
+      H5Sclose(memory);
+      H5Sclose(space);
+      H5Dclose(set);
+    }
+  } // namespace
+
+
+
+  PatchSeries::PatchSeries(const SimulatorAccess &access)
+    : access(access)
+  {}
+
+
+
+  PatchSeries::~PatchSeries()
+  {
+    if (file >= 0)
+      H5Fclose(file);
+  }
+
+
+
+  void
+  PatchSeries::open(const unsigned long frames)
+  {
+    const GeometryParameters &g       = access.parameters.geometry;
+    const auto                nodes   = access.contact->master_node_results();
+    const auto                faces   = access.contact->master_face_nodes();
+    const auto                in_zone = [&g](const NodalContact &m) {
+      return std::abs(m.X[0]) <= 0.5 * g.zone_length + 1e-9 &&
+             std::abs(m.X[1]) <= g.zone_half_width + 1e-9 && m.area > 0;
+    };
+    std::vector<int> index(nodes.size(), -1);
+    for (unsigned int i = 0; i < nodes.size(); ++i)
+      if (in_zone(nodes[i]))
+        {
+          index[i] = zone_nodes.size();
+          zone_nodes.push_back(i);
+        }
+    std::vector<int> quads;
+    for (const auto &face : faces)
+      {
+        bool inside = true;
+        for (const unsigned int n : face)
+          inside = inside && index[n] >= 0;
+        if (inside)
+          {
+            // VTK / XDMF quadrilaterals go round the cell; the faces are lexicographic
+            for (const unsigned int v : {0u, 1u, 3u, 2u})
+              quads.push_back(index[face[v]]);
+          }
+      }
+    n_quads                = quads.size() / 4;
+    const std::string path = access.output_directory + "/" + file_name;
+    const hsize_t     n    = zone_nodes.size();
+    if (frames == 0)
+      {
+        file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+        check(file, "create the file");
+        const hid_t         mesh = H5Gcreate2(file, "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        std::vector<double> points, area;
+        for (const unsigned int i : zone_nodes)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              points.push_back(nodes[i].X[d]);
+            area.push_back(nodes[i].area);
+          }
+        hid_t set = create(mesh, "points", {n, 3}, H5T_IEEE_F64LE, false);
+        check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, points.data()),
+              "write the points");
+        H5Dclose(set);
+        set = create(mesh, "quads", {hsize_t(n_quads), 4}, H5T_STD_I32LE, false);
+        if (n_quads > 0)
+          check(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, quads.data()),
+                "write the quadrilaterals");
+        H5Dclose(set);
+        set = create(mesh, "area", {n}, H5T_IEEE_F64LE, false);
+        check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, area.data()),
+              "write the areas");
+        H5Dclose(set);
+        H5Gclose(mesh);
+        H5Dclose(create(file, "time", {0}, H5T_IEEE_F64LE, true));
+        const hid_t group = H5Gcreate2(file, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+        for (const auto &[name, components] : fields)
+          H5Dclose(create(group,
+                          name,
+                          components == 1 ? std::vector<hsize_t>{0, n} :
+                                            std::vector<hsize_t>{0, n, components},
+                          H5T_IEEE_F32LE,
+                          true));
+        H5Gclose(group);
+      }
+    else
+      {
+        // a resumed run: the frames of its checkpoint, the later ones cut
+        file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+        AssertThrow(file >= 0,
+                    ExcMessage("Output/Patch series interval: the resumed run's " + path +
+                               " is missing or not readable; it holds the frames before "
+                               "the checkpoint."));
+        const hid_t time = H5Dopen2(file, "time", H5P_DEFAULT);
+        check(time, "open time");
+        hid_t   space = H5Dget_space(time);
+        hsize_t have  = 0;
+        H5Sget_simple_extent_dims(space, &have, nullptr);
+        H5Sclose(space);
+        AssertThrow(have >= frames,
+                    ExcMessage(path + " holds " + std::to_string(have) +
+                               " frames, the checkpoint " + std::to_string(frames) + "."));
+        times.resize(frames);
+        if (frames > 0)
+          {
+            space                  = H5Dget_space(time);
+            const hsize_t start[1] = {0}, count[1] = {frames};
+            H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+            const hid_t memory = H5Screate_simple(1, count, nullptr);
+            check(H5Dread(time, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, times.data()),
+                  "read the times");
+            H5Sclose(memory);
+            H5Sclose(space);
+          }
+        const hsize_t cut[1] = {frames};
+        check(H5Dset_extent(time, cut), "cut time");
+        H5Dclose(time);
+        for (const auto &[name, components] : fields)
+          {
+            const hid_t   set     = H5Dopen2(file, ("fields/" + name).c_str(), H5P_DEFAULT);
+            const hsize_t dims[3] = {frames, n, components};
+            check(set, "open " + name);
+            check(H5Dset_extent(set, dims), "cut " + name);
+            H5Dclose(set);
+          }
+      }
+    n_frames = frames;
+  }
+
+
+
+  void
+  PatchSeries::execute(const StepInfo &step)
+  {
+    const unsigned int every = access.parameters.output.patch_series_interval;
+    if (every == 0 || !access.wheelset || !access.contact || (step.step + 1) % every != 0)
+      return;
+    if (Utilities::MPI::this_mpi_process(access.mpi_communicator) != 0)
+      return;
+    const unsigned long frame = (step.step + 1) / every - 1;
+    if (file < 0)
+      open(frame);
+    const auto         nodes = access.contact->master_node_results();
+    std::vector<float> data;
+    for (unsigned int f = 0; f < fields.size(); ++f)
+      {
+        data.clear();
+        float v[dim];
+        for (const unsigned int i : zone_nodes)
+          {
+            values(f, nodes[i], v);
+            data.insert(data.end(), v, v + fields[f].second);
+          }
+        append(file, "fields/" + fields[f].first, H5T_NATIVE_FLOAT, data.data(), frame);
+      }
+    const double t = access.solver.time();
+    append(file, "time", H5T_NATIVE_DOUBLE, &t, frame);
+    check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
+    times.resize(frame);
+    times.push_back(t);
+    n_frames = frame + 1;
+    write_xdmf();
+  }
+
+
+
+  void
+  PatchSeries::write_xdmf() const
+  {
+    const unsigned long n = zone_nodes.size();
+    std::ostringstream  x;
+    x << std::setprecision(10) << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n<Domain>\n"
+      << "<Grid Name=\"contact patch\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (unsigned long k = 0; k < n_frames; ++k)
+      {
+        x << "<Grid Name=\"frame " << k << "\" GridType=\"Uniform\">\n<Time Value=\"" << times[k]
+          << "\"/>\n<Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << n_quads
+          << "\">\n<DataItem Dimensions=\"" << n_quads << " 4\" NumberType=\"Int\" Format=\"HDF\">"
+          << file_name << ":/mesh/quads</DataItem>\n</Topology>\n"
+          << "<Geometry GeometryType=\"XYZ\">\n<DataItem Dimensions=\"" << n
+          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file_name
+          << ":/mesh/points</DataItem>\n</Geometry>\n";
+        for (const auto &[name, components] : fields)
+          {
+            const std::string c = components == 1 ? "" : " 3";
+            x << "<Attribute Name=\"" << name << "\" AttributeType=\""
+              << (components == 1 ? "Scalar" : "Vector") << "\" Center=\"Node\">\n"
+              << "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << c << "\">\n"
+              << "<DataItem Dimensions=\"3 " << (components == 1 ? 2 : 3) << "\" Format=\"XML\">"
+              << k << " 0" << (components == 1 ? "" : " 0") << " 1 1"
+              << (components == 1 ? "" : " 1") << " 1 " << n << c << "</DataItem>\n"
+              << "<DataItem Dimensions=\"" << n_frames << " " << n << c
+              << "\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">" << file_name
+              << ":/fields/" << name << "</DataItem>\n</DataItem>\n</Attribute>\n";
+          }
+        x << "</Grid>\n";
+      }
+    x << "</Grid>\n</Domain>\n</Xdmf>\n";
+    write_file_atomically(access.output_directory + "/patch_series.xdmf", x.str());
+  }
+} // namespace WheelRail
