@@ -60,15 +60,6 @@ DEFAULT_VARIANTS = ["h1.32:0.00132:2.6e-8", "h0.66:0.00066:2.6e-8",
                     "h0.66-dt/2:0.00066:1.3e-8", "h0.33:0.00033:2.6e-8"]
 
 
-def fit_ellipse(x, y, p, force):
-    inside = p > 0
-    xc = np.sum(force[inside] * x[inside]) / np.sum(force[inside])
-    use = inside & (p >= 0.25 * p[inside].max())
-    A = np.column_stack([np.ones(use.sum()), (x[use] - xc) ** 2, y[use] ** 2])
-    c = np.linalg.lstsq(A, p[use] ** 2, rcond=None)[0]
-    return np.sqrt(c[0]), np.sqrt(-c[0] / c[1]), np.sqrt(-c[0] / c[2])
-
-
 def analyse(directory, nx, ny):
     prm = hc.read_parameters(directory)
     law = prm["Contact/Friction law"]
@@ -79,7 +70,7 @@ def analyse(directory, nx, ny):
     if r["note"]:
         print(f"{directory}: {r['note']}")
     P = hc.read_patch(directory, "t")
-    p0, a, b = fit_ellipse(P["x"], P["y"], P["pressure"], P["F_n"])
+    p0, a, b = hc.fit_ellipse(P["x"], P["y"], P["pressure"], P["F_n"])
     rows = hc.axis_rows(P)
     xs = P["x"][rows][P["in_contact"][rows] > 0]
     length = xs.max() - xs.min() if xs.size else 0.

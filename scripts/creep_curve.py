@@ -54,13 +54,13 @@ file hold the same finite rows and that the figure shows the half-space curve
 """
 import argparse
 import os
-import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hs_compare as hc  # noqa: E402  (scripts/hs_compare.py: readers, the half-space)
 import plot  # noqa: E402  (scripts/plot.py: Report, the figure check)
+import sweep  # noqa: E402  (scripts/sweep.py: running a case)
 
 import h5py  # noqa: E402
 import matplotlib  # noqa: E402
@@ -108,16 +108,6 @@ CURVE = [2.5e-4, 5e-4, 1e-3, 1.5e-3, 2e-3, 3e-3, 4e-3, 5e-3, 6e-3, 8e-3, 1e-2, 1
 
 def fail(message):
     sys.exit("creep_curve.py: " + message)
-
-
-def run(exe, prm, ranks, log):
-    cmd = [exe, prm]
-    if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    with open(log, "w") as f:
-        if subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env).returncode != 0:
-            fail("%s failed, see %s" % (prm, log))
 
 
 def write_case(case, path, outdir, sets):
@@ -298,7 +288,7 @@ def main():
     dry = os.path.join(out, "dry")
     if not args.plot_only or not os.path.exists(os.path.join(dry, "parameters.prm")):
         write_case(args.case, dry + ".prm", dry, {"Problem": {"Dry run": "true"}})
-        run(args.wheelrail, dry + ".prm", 1, dry + ".log")
+        sweep.run_case(dry + ".prm", 1, args.wheelrail, dry + ".log", "creep_curve.py")
     prm = hc.read_parameters(dry)
     try:
         if args.creepages:
@@ -330,7 +320,7 @@ def main():
             print("creep_curve.py: running %s (xi = %.4g) on %d rank(s)" % (path + ".prm", xi, args.np),
                   flush=True)
             t0 = time.time()
-            run(args.wheelrail, path + ".prm", args.np, path + ".log")
+            sweep.run_case(path + ".prm", args.np, args.wheelrail, path + ".log", "creep_curve.py")
             print("  %.0f s" % (time.time() - t0), flush=True)
             runs.append(path)
     if not runs:

@@ -11,6 +11,7 @@ creep curve) and convergence_study.py (the mesh and time-step study):
                             the run's files: parameters.prm, statistics
                             (deal.II TableHandler text), the probes
                             (series.h5, or the CSV files), patch_*.csv
+  fit_ellipse               the Hertzian ellipse fitted to a patch's pressures
   compare_patch             the patch at an instant against the half-space
                             solution at the patch's own F_N and F_x: the
                             solution along y = 0, the RMS differences of
@@ -185,6 +186,18 @@ def normal_case(prm, Fn, grid=DEFAULT_GRID):
     return hs.elliptic_case(grid[0], grid[1], MARGIN, Fn, float(prm["Geometry/Wheel/Radius"]),
                             float(prm["Geometry/Rail/Profile radius"]),
                             float(prm["Material/Young's modulus"]), float(prm["Material/Poisson's ratio"]))
+
+
+def fit_ellipse(x, y, p, force):
+    """Hertzian p^2 = p0^2 (1 - (x - xc)^2/a^2 - y^2/b^2) fitted to the pressures
+    above 25 % of the largest (as the program's own fit; xc the force-weighted
+    centre): (p0, a, b)."""
+    inside = p > 0
+    xc = np.sum(force[inside] * x[inside]) / np.sum(force[inside])
+    use = inside & (p >= 0.25 * p[inside].max())
+    A = np.column_stack([np.ones(use.sum()), (x[use] - xc) ** 2, y[use] ** 2])
+    c = np.linalg.lstsq(A, p[use] ** 2, rcond=None)[0]
+    return np.sqrt(c[0]), np.sqrt(-c[0] / c[1]), np.sqrt(-c[0] / c[2])
 
 
 def patch_totals(P):

@@ -19,6 +19,8 @@ import time
 
 import numpy as np
 
+import hs_compare as hc  # scripts/hs_compare.py: the ellipse fit
+
 STYLE = """
 body { font-family: sans-serif; max-width: 1100px; margin: 1.5em auto; color: #222; line-height: 1.4; }
 h1 { font-size: 1.5em; border-bottom: 2px solid #444; }
@@ -87,24 +89,13 @@ def verdict(error, limit):
                                                  "within" if ok else "outside", limit)
 
 
-def fit_ellipse(x, y, p, force):
-    """Hertzian p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2) fitted to the pressures above
-    25 % of the largest (the program's own fit): (p0, a, b)."""
-    inside = p > 0
-    xc = np.sum(force[inside] * x[inside]) / np.sum(force[inside])
-    use = inside & (p >= 0.25 * p[inside].max())
-    A = np.column_stack([np.ones(use.sum()), (x[use] - xc) ** 2, y[use] ** 2])
-    c = np.linalg.lstsq(A, p[use] ** 2, rcond=None)[0]
-    return np.sqrt(c[0]), np.sqrt(-c[0] / c[1]), np.sqrt(-c[0] / c[2])
-
-
 def key_figures(prm, names, stats, patch, comparison, column):
     """Rows (quantity, FE, reference, difference, verdict) of the run at t."""
     rows = []
     num = lambda v: "<td class='num'>%s</td>" % v
     if comparison is not None:
         c, h = comparison, comparison["hertz"]
-        p0, a, b = fit_ellipse(patch["x"], patch["y"], patch["pressure"], patch["F_n"])
+        p0, a, b = hc.fit_ellipse(patch["x"], patch["y"], patch["pressure"], patch["F_n"])
         rows.append(["normal force F_N at t [kN]", num("%.2f" % (c["Fn"] * 1e-3)), num(""), num(""),
                      "<td class='info'>the load it carries</td>"])
         for label, fe, ref, key in (("peak pressure p0 [MPa] (fitted ellipse; Hertz)", p0 * 1e-6,

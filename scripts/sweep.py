@@ -79,7 +79,9 @@ def write_case(base, out, law, mu):
     return path, os.path.join(out, name)
 
 
-def run_case(prm, ranks, exe, log):
+def run_case(prm, ranks, exe, log, who="sweep.py"):
+    """Run wheelrail on PRM with RANKS MPI ranks, its output into LOG; exit
+    with a message (prefixed by @p who) if it fails."""
     cmd = [exe, prm]
     if ranks > 1:
         cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
@@ -87,7 +89,7 @@ def run_case(prm, ranks, exe, log):
     with open(log, "w") as f:
         result = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, env=env)
     if result.returncode != 0:
-        sys.exit("sweep.py: %s failed (exit status %d), see %s" % (prm, result.returncode, log))
+        sys.exit("%s: %s failed (exit status %d), see %s" % (who, prm, result.returncode, log))
 
 
 def summarise(run):

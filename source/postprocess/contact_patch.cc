@@ -184,8 +184,7 @@ namespace WheelRail
     for (unsigned int i = 0; i < nodes.size(); ++i)
       {
         const NodalContact &m = nodes[i];
-        if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
-            std::abs(m.X[1]) > g.zone_half_width + 1e-9 || m.area <= 0)
+        if (!in_solution_zone(g, m))
           continue;
         const double *sum = &w.sums[i * n_window_fields];
         n_always += sum[0] == n;
@@ -234,8 +233,7 @@ namespace WheelRail
     std::vector<Verification::PatchNode> patch;
     for (const NodalContact &m : states)
       {
-        if (std::abs(m.X[0]) > 0.5 * g.zone_length + 1e-9 ||
-            std::abs(m.X[1]) > g.zone_half_width + 1e-9 || m.area <= 0)
+        if (!in_solution_zone(g, m))
           continue;
         const bool   in     = m.in_contact();
         const double p      = m.pressure();

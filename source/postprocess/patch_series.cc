@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <wheelrail/contact/penalty_contact.h>
+#include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/postprocess/patch_series.h>
 
@@ -140,16 +141,12 @@ namespace WheelRail
   void
   PatchSeries::open(const unsigned long frames)
   {
-    const GeometryParameters &g       = access.parameters.geometry;
-    const auto                nodes   = access.contact->master_node_results();
-    const auto                faces   = access.contact->master_face_nodes();
-    const auto                in_zone = [&g](const NodalContact &m) {
-      return std::abs(m.X[0]) <= 0.5 * g.zone_length + 1e-9 &&
-             std::abs(m.X[1]) <= g.zone_half_width + 1e-9 && m.area > 0;
-    };
-    std::vector<int> index(nodes.size(), -1);
+    const GeometryParameters &g     = access.parameters.geometry;
+    const auto                nodes = access.contact->master_node_results();
+    const auto                faces = access.contact->master_face_nodes();
+    std::vector<int>          index(nodes.size(), -1);
     for (unsigned int i = 0; i < nodes.size(); ++i)
-      if (in_zone(nodes[i]))
+      if (in_solution_zone(g, nodes[i]))
         {
           index[i] = zone_nodes.size();
           zone_nodes.push_back(i);

@@ -19,11 +19,7 @@ namespace WheelRail
                       const std::vector<NodalContact> &nodes,
                       const std::string               &file_name)
   {
-    const GeometryParameters &g       = access.parameters.geometry;
-    const auto                in_zone = [&g](const NodalContact &m) {
-      return std::abs(m.X[0]) <= 0.5 * g.zone_length + 1e-9 &&
-             std::abs(m.X[1]) <= g.zone_half_width + 1e-9 && m.area > 0;
-    };
+    const GeometryParameters &g = access.parameters.geometry;
     // pressure, shear (3), s_n, de/dt (3), cof, state, adhesion share, slip share
     const std::vector<std::string> names  = {"pressure_Pa",
                                              "shear_Pa",
@@ -57,7 +53,7 @@ namespace WheelRail
       {
         bool inside = true;
         for (const unsigned int n : face)
-          inside = inside && in_zone(nodes[n]);
+          inside = inside && in_solution_zone(g, nodes[n]);
         if (!inside)
           continue;
         DataOutBase::Patch<2, dim> patch;

@@ -10,8 +10,7 @@
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
-sed -e "s#@SOURCE_DIR@#$src/tests/plot#" -e "s#= plot_run#= surface_run#" \
-  "$src/tests/plot/plot_report_01.prm.in" > surface.prm
+bash "$(dirname "$0")/rolling_case.sh" "$src" surface_run > surface.prm
 rm -rf surface_run
 "$exe" surface.prm > wheelrail.log
 /usr/bin/python3 - <<'PY'

@@ -13,8 +13,7 @@ set -euo pipefail
 exe=$1 src=$2
 # Open MPI as root (CI, containers) and more ranks than cores
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-sed -e "s#@SOURCE_DIR@#$src/tests/plot#" -e "s#= plot_run#= series_run#" \
-  "$src/tests/plot/plot_report_01.prm.in" > series.prm
+bash "$(dirname "$0")/rolling_case.sh" "$src" series_run > series.prm
 # the probe at the top of the wheel: a node that rank 1 owns on 2 ranks
 printf 'subsection Output\n  set Probe point = -0.003, 0, 0.92\nend\n' >> series.prm
 rm -rf series_run

@@ -9,6 +9,7 @@
 
 #include <wheelrail/postprocess/postprocessor.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -29,6 +30,16 @@ namespace WheelRail
    *  in OUTDIR/@p name. */
   void
   write_contact_nodes(const SimulatorAccess &access, const std::string &name);
+
+  /** Whether rail-top node @p m (of master_node_results()) lies in the
+   *  solution zone of @p g (|x| <= length / 2, |y| <= half width) with a
+   *  tributary area: the nodes of the patch files. */
+  inline bool
+  in_solution_zone(const GeometryParameters &g, const NodalContact &m)
+  {
+    return std::abs(m.X[0]) <= 0.5 * g.zone_length + 1e-9 &&
+           std::abs(m.X[1]) <= g.zone_half_width + 1e-9 && m.area > 0;
+  }
 
   /**
    * The contact fields of @p nodes (master_node_results()) on the rail-top
