@@ -175,8 +175,16 @@ def measure(run_dir, window):
     return row
 
 
-def metadata(case, prm, rows, window):
+def step_used(run_dir):
+    """The time step the run took [s] (Time step = 0 asks for the stable one)."""
+    names, stats = hc.read_statistics(run_dir)
+    step, t = hc.column(names, stats, "step"), hc.column(names, stats, "time")
+    return float((t[-1] - t[0]) / (step[-1] - step[0])) if len(t) > 1 else float("nan")
+
+
+def metadata(case, prm, rows, window, run_dir):
     meta = {"case": os.path.abspath(case), "static_wheel_load_N": static_load(prm),
+            "time_step_used_s": step_used(run_dir),
             "mean_normal_force_N": float(np.mean([r["F_N_N"] for r in rows])),
             "window_m": window, "written": time.strftime("%Y-%m-%d %H:%M:%S %Z"),
             "columns": "; ".join("%s [%s]: %s" % c for c in COLUMNS)}
@@ -338,7 +346,7 @@ def main():
         r["halfspace_Fx_over_Fn"], r["halfspace_slip_area_fraction"] = at[r["creepage"]][1:]
     hs_seconds = time.time() - t0
 
-    meta = metadata(args.case, prm, rows, window)
+    meta = metadata(args.case, prm, rows, window, runs[0])
     csv_path, h5_path = os.path.join(out, "creep_table.csv"), os.path.join(out, "creep_table.h5")
     write_csv(csv_path, meta, rows)
     write_h5(h5_path, meta, rows, curve)
