@@ -26,42 +26,9 @@ namespace WheelRail
                              "this run's?)."));
     }
 
-    /** (name, components) of the fields, in the order of values() */
-    const std::vector<std::pair<std::string, unsigned int>> fields = {
-      {"pressure_Pa", 1},
-      {"shear_Pa", 3},
-      {"slip_velocity_m_s", 1},
-      {"slip_rate_m_s", 3},
-      {"cof", 1},
-      {"state_0free_1adhesion_2slip", 1}};
-
-    /** Field @p f of node @p m into @p v (components). */
-    void
-    values(const unsigned int f, const NodalContact &m, float *v)
-    {
-      switch (f)
-        {
-          case 0:
-            v[0] = m.pressure();
-            break;
-          case 1:
-            for (unsigned int d = 0; d < dim; ++d)
-              v[d] = m.area > 0 ? m.tangential_force[d] / m.area : 0.;
-            break;
-          case 2:
-            v[0] = m.slip_velocity;
-            break;
-          case 3:
-            for (unsigned int d = 0; d < dim; ++d)
-              v[d] = m.slip_rate[d];
-            break;
-          case 4:
-            v[0] = m.cof;
-            break;
-          default:
-            v[0] = double(m.in_contact()) + double(m.in_contact() && !m.adhesion());
-        }
-    }
+    /** The fields of the series: those of the surface files without the
+     *  adhesion and slip shares. */
+    const unsigned int n_series_fields = 6;
 
     /** A dataset of @p dims (rank 1-3) of @p type, the first dimension
      *  unlimited if @p extendable, chunked by one frame, gzip. */
@@ -195,13 +162,16 @@ namespace WheelRail
         H5Gclose(mesh);
         H5Dclose(create(file, "time", {0}, H5T_IEEE_F64LE, true));
         const hid_t group = H5Gcreate2(file, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        for (const auto &[name, components] : fields)
-          H5Dclose(create(group,
-                          name,
-                          components == 1 ? std::vector<hsize_t>{0, n} :
-                                            std::vector<hsize_t>{0, n, components},
-                          H5T_IEEE_F32LE,
-                          true));
+        for (unsigned int f = 0; f < n_series_fields; ++f)
+          {
+            const PatchField &field = patch_fields()[f];
+            H5Dclose(create(group,
+                            field.name,
+                            field.components == 1 ? std::vector<hsize_t>{0, n} :
+                                                    std::vector<hsize_t>{0, n, field.components},
+                            H5T_IEEE_F32LE,
+                            true));
+          }
         H5Gclose(group);
       }
     else
@@ -236,16 +206,16 @@ namespace WheelRail
         const hsize_t cut[1] = {frames};
         check(H5Dset_extent(time, cut), "cut time");
         H5Dclose(time);
-        for (const auto &[name, components] : fields)
+        for (unsigned int f = 0; f < n_series_fields; ++f)
           {
-            const hid_t   set     = H5Dopen2(file, ("fields/" + name).c_str(), H5P_DEFAULT);
-            const hsize_t dims[3] = {frames, n, components};
-            check(set, "open " + name);
-            check(H5Dset_extent(set, dims), "cut " + name);
+            const PatchField &field = patch_fields()[f];
+            const hid_t       set   = H5Dopen2(file, ("fields/" + field.name).c_str(), H5P_DEFAULT);
+            const hsize_t     dims[3] = {frames, n, field.components};
+            check(set, "open " + field.name);
+            check(H5Dset_extent(set, dims), "cut " + field.name);
             H5Dclose(set);
           }
       }
-    n_frames = frames;
   }
 
 
@@ -261,25 +231,24 @@ namespace WheelRail
     const unsigned long frame = (step.step + 1) / every - 1;
     if (file < 0)
       open(frame);
-    const auto         nodes = access.contact->master_node_results();
+    const auto                                     nodes = access.contact->master_node_results();
+    std::vector<std::array<float, n_patch_values>> values;
+    for (const unsigned int i : zone_nodes)
+      values.push_back(patch_field_values(nodes[i]));
     std::vector<float> data;
-    for (unsigned int f = 0; f < fields.size(); ++f)
+    for (unsigned int f = 0; f < n_series_fields; ++f)
       {
+        const PatchField &field = patch_fields()[f];
         data.clear();
-        float v[dim];
-        for (const unsigned int i : zone_nodes)
-          {
-            values(f, nodes[i], v);
-            data.insert(data.end(), v, v + fields[f].second);
-          }
-        append(file, "fields/" + fields[f].first, H5T_NATIVE_FLOAT, data.data(), frame);
+        for (const auto &v : values)
+          data.insert(data.end(), &v[field.first], &v[field.first] + field.components);
+        append(file, "fields/" + field.name, H5T_NATIVE_FLOAT, data.data(), frame);
       }
     const double t = access.solver.time();
     append(file, "time", H5T_NATIVE_DOUBLE, &t, frame);
     check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
     times.resize(frame);
     times.push_back(t);
-    n_frames = frame + 1;
     write_xdmf();
   }
 
@@ -288,7 +257,8 @@ namespace WheelRail
   void
   PatchSeries::write_xdmf() const
   {
-    const unsigned long n = zone_nodes.size();
+    const unsigned long n        = zone_nodes.size();
+    const unsigned long n_frames = times.size();
     std::ostringstream  x;
     x << std::setprecision(10) << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n<Domain>\n"
       << "<Grid Name=\"contact patch\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
@@ -301,9 +271,11 @@ namespace WheelRail
           << "<Geometry GeometryType=\"XYZ\">\n<DataItem Dimensions=\"" << n
           << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << file_name
           << ":/mesh/points</DataItem>\n</Geometry>\n";
-        for (const auto &[name, components] : fields)
+        for (unsigned int f = 0; f < n_series_fields; ++f)
           {
-            const std::string c = components == 1 ? "" : " 3";
+            const std::string &name       = patch_fields()[f].name;
+            const unsigned int components = patch_fields()[f].components;
+            const std::string  c          = components == 1 ? "" : " 3";
             x << "<Attribute Name=\"" << name << "\" AttributeType=\""
               << (components == 1 ? "Scalar" : "Vector") << "\" Center=\"Node\">\n"
               << "<DataItem ItemType=\"HyperSlab\" Dimensions=\"" << n << c << "\">\n"

@@ -7,6 +7,17 @@
 
 namespace WheelRail
 {
+  DataOutBase::VtkFlags::ZlibCompressionLevel
+  vtu_compression_level(const std::string &setting)
+  {
+    // smaller files for more time
+    return setting == "best" ? DataOutBase::VtkFlags::best_compression :
+           setting == "none" ? DataOutBase::VtkFlags::no_compression :
+                               DataOutBase::VtkFlags::best_speed;
+  }
+
+
+
   VtuOutput::VtuOutput(const SimulatorAccess &access)
     : access(access)
   {}
@@ -43,14 +54,10 @@ namespace WheelRail
     data_out.add_data_vector(material, "material_id", DataOut<dim>::type_cell_data);
     data_out.add_data_vector(rank, "mpi_rank", DataOut<dim>::type_cell_data);
     data_out.build_patches();
-    // zlib level from Output/VTU compression: smaller files for more time
     DataOutBase::VtkFlags flags;
-    flags.time               = access.solver.time();
-    flags.cycle              = counter;
-    const std::string &level = access.parameters.output.vtu_compression;
-    flags.compression_level  = level == "best" ? DataOutBase::VtkFlags::best_compression :
-                               level == "none" ? DataOutBase::VtkFlags::no_compression :
-                                                 DataOutBase::VtkFlags::best_speed;
+    flags.time              = access.solver.time();
+    flags.cycle             = counter;
+    flags.compression_level = vtu_compression_level(access.parameters.output.vtu_compression);
     data_out.set_flags(flags);
     const std::string name = write_vtu_with_pvtu_record(
       data_out, access.output_directory + "/", "solution", counter++, 5, access.mpi_communicator);

@@ -9,6 +9,7 @@
 
 #include <wheelrail/postprocess/postprocessor.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -40,6 +41,24 @@ namespace WheelRail
     return std::abs(m.X[0]) <= 0.5 * g.zone_length + 1e-9 &&
            std::abs(m.X[1]) <= g.zone_half_width + 1e-9 && m.area > 0;
   }
+
+  /** A contact field of the patch's surface files: its name and its
+   *  components at [first, first + components) of patch_field_values(). */
+  struct PatchField
+  {
+    std::string  name;
+    unsigned int first;
+    unsigned int components;
+  };
+  /** The nodal values of patch_field_values(). */
+  constexpr unsigned int n_patch_values = 12;
+  /** pressure_Pa, shear_Pa (3), slip_velocity_m_s, slip_rate_m_s (3), cof,
+   *  state_0free_1adhesion_2slip, adhesion_share, slip_share. */
+  const std::vector<PatchField> &
+  patch_fields();
+  /** The values of patch_fields() at rail-top node @p m. */
+  std::array<float, n_patch_values>
+  patch_field_values(const NodalContact &m);
 
   /**
    * The contact fields of @p nodes (master_node_results()) on the rail-top

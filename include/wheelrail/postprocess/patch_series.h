@@ -56,11 +56,10 @@ namespace WheelRail
     write_xdmf() const;
 
     const SimulatorAccess    &access;
-    std::int64_t              file     = -1; ///< the HDF5 file (hid_t)
-    unsigned long             n_frames = 0;
+    std::int64_t              file = -1;  ///< the HDF5 file (hid_t)
     std::vector<unsigned int> zone_nodes; ///< indices in master_node_results()
     unsigned int              n_quads = 0;
-    std::vector<double>       times;
+    std::vector<double>       times; ///< of the frames so far
   };
 } // namespace WheelRail
 

@@ -7,6 +7,8 @@
 #ifndef wheelrail_postprocess_vtu_output_h
 #define wheelrail_postprocess_vtu_output_h
 
+#include <deal.II/base/data_out_base.h>
+
 #include <wheelrail/postprocess/postprocessor.h>
 
 #include <string>
@@ -15,6 +17,10 @@
 
 namespace WheelRail
 {
+  /** zlib level of Output/VTU compression ('fast', 'best', 'none'). */
+  DataOutBase::VtkFlags::ZlibCompressionLevel
+  vtu_compression_level(const std::string &setting);
+
   class VtuOutput : public SerializedPostprocessor<VtuOutput>
   {
   public:
