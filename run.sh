@@ -8,8 +8,8 @@
 #                               references hold whatever CPU built and runs it
 #   ./run.sh CASE.prm [-np N] [--resume]  same set-up, then run CASE.prm on N ranks
 #                               (default 2); --resume continues from its checkpoint
-#   ./run.sh bench [N ...]      same set-up, then the speed benchmarks prm/bench_paper.prm
-#                               and prm/bench_block.prm on 1 and 2 ranks (or the rank
+#   ./run.sh bench [N ...]      same set-up, then the speed benchmarks prm/bench_paper.prm,
+#                               bench_paper_single.prm and bench_block.prm on 1 and 2 ranks (or the rank
 #                               counts N given); figures appended to bench/results.csv,
 #                               after the machine's measured FMA peak and memory bandwidth
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
@@ -81,7 +81,8 @@ run_case() {
   echo "run.sh: results are in $(cd "${dir:-results}" && pwd)/ (open solution.pvd in ParaView; statistics; probe.csv; parameters.prm)"
 }
 
-# The speed benchmarks: prm/bench_paper.prm and prm/bench_block.prm on each
+# The speed benchmarks: prm/bench_paper.prm, prm/bench_paper_single.prm (the
+# same with single-precision element geometry) and prm/bench_block.prm on each
 # rank count, each timing.csv row appended to bench/results.csv with the date,
 # commit, CPU, the 2-core triad bandwidth, the bytes per element-step and the case.
 run_bench() {
@@ -108,8 +109,9 @@ run_bench() {
   echo "$limits"
   triad=$(echo "$limits" | sed -n 's/.*STREAM triad.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
   local case dir rows=0
-  for case in paper block; do
+  for case in paper paper_single block; do
     dir=results/bench
+    [ "$case" = paper_single ] && dir=results/bench_single
     [ "$case" = block ] && dir=results/bench_block
     for np in "${counts[@]}"; do
       echo "run.sh: benchmark prm/bench_$case.prm on $np rank(s)"

@@ -229,6 +229,8 @@ namespace WheelRail
     else if (parameters.solver.damping_model == "Rayleigh")
       pcout << " (beta " << fmt(parameters.solver.rayleigh_beta) << " s)";
     pcout << std::endl;
+    if (parameters.solver.single_precision_geometry)
+      pcout << "  element geometry             : single precision (force loop)" << std::endl;
     if (contact)
       {
         const ContactParameters &cp = parameters.contact;

@@ -15,6 +15,7 @@
 #include <wheelrail/solver/element_kernel.h>
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 
 namespace WheelRail
@@ -263,6 +264,29 @@ namespace WheelRail
                            "scaled Jacobian <= 0): check Geometry/Bar/Distortion "
                            "and the Geometry parameters."));
     stable_dt = prm.solver.courant_factor * Utilities::MPI::min(min_dt, mpi_communicator);
+
+    // the force loop's copy with single-precision geometric factors
+    single_precision_geometry = prm.solver.single_precision_geometry;
+    batch_single.clear();
+    if (single_precision_geometry)
+      {
+        batch_single.resize_fast(std::size_t(n_batches) * SingleField::n_double);
+        for (unsigned int batch = 0; batch < n_batches; ++batch)
+          {
+            const double *data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
+            double       *block = &batch_single[std::size_t(batch) * SingleField::n_double];
+            float         geometry[SingleField::n_geometry * W];
+            for (unsigned int k = 0; k < SingleField::n_geometry * W; ++k)
+              geometry[k] = static_cast<float>(data[k]);
+            std::memcpy(block, geometry, sizeof(geometry));
+            for (unsigned int l = 0; l < W; ++l)
+              {
+                block[SingleField::volume + l] = data[Field::volume * W + l];
+                block[SingleField::kappa + l]  = data[Field::kappa * W + l];
+                block[SingleField::beta + l]   = data[Field::beta * W + l];
+              }
+          }
+      }
   }
 
 

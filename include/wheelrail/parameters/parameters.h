@@ -144,6 +144,7 @@ namespace WheelRail
     double       stiffness_damping_coefficient;
     double       rayleigh_beta;
     Tensor<1, 3> gravity;
+    bool         single_precision_geometry; ///< Element geometry precision = single
 
     static void
     declare_parameters(ParameterHandler &prm);

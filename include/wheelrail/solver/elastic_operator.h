@@ -258,10 +258,23 @@ namespace WheelRail
     find_families();
     void
     setup_lumped_mass();
-    /** Request the element data of @p batch into the cache. */
-    void
-    prefetch_batch(const unsigned int batch) const;
-    /** Batches ahead of the one computed that prefetch_batch() requests. */
+    /** The element force loop over the batches of @p batch_blocks
+     *  (@p block_size doubles each), read through @p Data (DoubleData or
+     *  SingleData of element_kernel.h). */
+    template <typename Data>
+    double
+    element_loop(const double      *batch_blocks,
+                 const unsigned int block_size,
+                 const double      *U,
+                 const double      *V,
+                 double            *F,
+                 const bool         with_damping) const;
+    /** Request a batch's element data (@p size doubles) into the cache. */
+    static void
+    prefetch_block(const double *block, const unsigned int size);
+    /** Batches ahead of the one computed that prefetch_block() requests
+     *  (bench of 2026-11-25, doc/performance.md: 4 or 6 batches are within
+     *  the noise of 2, none requested is 60 % slower). */
     static constexpr unsigned int prefetch_distance = 2;
 
     FESystem<dim>             fe;
@@ -279,9 +292,14 @@ namespace WheelRail
     std::vector<double>       constraint_weights;
 
     // Element data, batches of n_lanes cells, structure of arrays.
-    unsigned int              n_cells   = 0;
-    unsigned int              n_batches = 0;
-    AlignedVector<double>     batch_data;       ///< [batch][field][lane]
+    unsigned int          n_cells   = 0;
+    unsigned int          n_batches = 0;
+    AlignedVector<double> batch_data; ///< [batch][field][lane]
+    /** Solver/Element geometry precision = single: the force loop reads
+     *  batch_single (layout ElementKernel::SingleField), everything else
+     *  batch_data. */
+    bool                      single_precision_geometry = false;
+    AlignedVector<double>     batch_single;
     std::vector<unsigned int> batch_nodes;      ///< [batch][vertex][lane]
     std::vector<unsigned int> batch_cell_index; ///< active cell index
     /** Batches whose 8 cells are the 8 children of one parent, in child
