@@ -232,4 +232,20 @@ namespace WheelRail
                         position[face.node[3]]}});
     return faces;
   }
+
+
+
+  std::vector<std::array<unsigned int, 4>>
+  PenaltyContact::candidate_slave_faces() const
+  {
+    const Pass       &first = passes.front();
+    std::vector<bool> candidate(first.slaves.size(), false);
+    for (const unsigned int c : first.candidate_slaves)
+      candidate[c] = true;
+    std::vector<std::array<unsigned int, 4>> faces;
+    for (const auto &face : first.slave_faces)
+      if (candidate[face[0]] && candidate[face[1]] && candidate[face[2]] && candidate[face[3]])
+        faces.push_back(face);
+    return faces;
+  }
 } // namespace WheelRail

@@ -108,7 +108,9 @@ namespace WheelRail
 
     // slaves: sum the partial areas of shared nodes, order by position
     std::map<types::global_dof_index, std::pair<Point<dim>, double>> slave_map;
-    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, slaves))
+    const std::vector<std::vector<double>>                           slave_parts =
+      Utilities::MPI::all_gather(mpi_communicator, slaves);
+    for (const auto &part : slave_parts)
       for (unsigned int i = 0; i < part.size(); i += 5)
         {
           auto &entry = slave_map[static_cast<types::global_dof_index>(part[i])];
@@ -130,6 +132,19 @@ namespace WheelRail
         pass.slave_node.push_back(node_index(std::get<1>(s), state.X));
         pass.slaves.push_back(state);
       }
+    // the slave faces (four consecutive vertex entries each), in slave indices
+    std::map<types::global_dof_index, unsigned int> slave_of_dof;
+    for (unsigned int k = 0; k < sorted_slaves.size(); ++k)
+      slave_of_dof[std::get<1>(sorted_slaves[k])] = k;
+    pass.slave_faces.clear();
+    for (const auto &part : slave_parts)
+      for (unsigned int i = 0; i + 20 <= part.size(); i += 20)
+        {
+          std::array<unsigned int, 4> face;
+          for (unsigned int v = 0; v < 4; ++v)
+            face[v] = slave_of_dof.at(static_cast<types::global_dof_index>(part[i + 5 * v]));
+          pass.slave_faces.push_back(face);
+        }
 
     // faces, ordered by centroid
     std::vector<std::pair<Point<dim>, std::vector<double>>> sorted_faces;

@@ -259,6 +259,7 @@ namespace WheelRail
     access.write_file("patch_" + name + ".csv", csv.str());
 
     write_patch_surface(access, states, "patch_" + name + ".vtu");
+    write_tread_surface(access, contact.slave_node_results(), "patch_tread_" + name + ".vtu");
 
     if (access.robust_output_only())
       return;

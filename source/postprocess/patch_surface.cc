@@ -45,63 +45,111 @@ namespace WheelRail
 
 
 
+  namespace
+  {
+    /** A face's quadrilateral (DataOutBase::Patch<2, 3>, the vertices in the
+     *  faces' lexicographic order, which is deal.II's) with the values of
+     *  patch_field_values() at its vertices. */
+    DataOutBase::Patch<2, dim>
+    face_patch(const std::array<unsigned int, 4> &face,
+               const std::vector<NodalContact>   &nodes,
+               const bool                         current_position,
+               const unsigned int                 index)
+    {
+      DataOutBase::Patch<2, dim> patch;
+      patch.patch_index    = index;
+      patch.reference_cell = ReferenceCells::Quadrilateral;
+      patch.data.reinit(n_patch_values, 4);
+      for (unsigned int v = 0; v < 4; ++v)
+        {
+          const NodalContact &m = nodes[face[v]];
+          patch.vertices[v]     = current_position ? m.x : m.X;
+          const auto row        = patch_field_values(m);
+          for (unsigned int k = 0; k < n_patch_values; ++k)
+            patch.data(k, v) = row[k];
+        }
+      return patch;
+    }
+
+    /** The quadrilaterals with the fields of patch_fields() as point data:
+     *  binary, zlib-compressed VTU by DataOutBase (Output/VTU compression). */
+    void
+    write_quads(const SimulatorAccess                         &access,
+                const std::vector<DataOutBase::Patch<2, dim>> &patches,
+                const std::string                             &file_name)
+    {
+      std::vector<std::string> names;
+      std::vector<std::tuple<unsigned int,
+                             unsigned int,
+                             std::string,
+                             DataComponentInterpretation::DataComponentInterpretation>>
+        vectors;
+      for (const PatchField &field : patch_fields())
+        {
+          names.insert(names.end(), field.components, field.name);
+          if (field.components > 1)
+            vectors.emplace_back(field.first,
+                                 field.first + field.components - 1,
+                                 field.name,
+                                 DataComponentInterpretation::component_is_part_of_vector);
+        }
+      DataOutBase::VtkFlags flags;
+      flags.time              = access.solver.time();
+      flags.compression_level = vtu_compression_level(access.parameters.output.vtu_compression);
+      std::ostringstream out;
+      DataOutBase::write_vtu(patches, names, vectors, flags, out);
+      access.write_file(file_name, out.str());
+    }
+  } // namespace
+
+
+
   // The contact fields on the rail-top surface of the solution zone: every
-  // master face of the first pass whose four nodes lie in the zone becomes
-  // a quadrilateral patch (DataOutBase::Patch<2, 3>, the vertices in the
-  // faces' lexicographic order, which is deal.II's), with the nodal values
-  // of master_node_results() at its vertices, written by DataOutBase as
-  // binary, zlib-compressed VTU (Output/VTU compression). ParaView then
-  // interpolates, contours and clips the fields on the surface.
+  // master face of the first pass whose four nodes lie in the zone, at the
+  // nodes' reference positions, with the nodal values of
+  // master_node_results(). ParaView then interpolates, contours and clips
+  // the fields on the surface.
   void
   write_patch_surface(const SimulatorAccess           &access,
                       const std::vector<NodalContact> &nodes,
                       const std::string               &file_name)
   {
-    const GeometryParameters &g = access.parameters.geometry;
-    std::vector<std::string>  names;
-    std::vector<std::tuple<unsigned int,
-                           unsigned int,
-                           std::string,
-                           DataComponentInterpretation::DataComponentInterpretation>>
-      vectors;
-    for (const PatchField &field : patch_fields())
-      {
-        names.insert(names.end(), field.components, field.name);
-        if (field.components > 1)
-          vectors.emplace_back(field.first,
-                               field.first + field.components - 1,
-                               field.name,
-                               DataComponentInterpretation::component_is_part_of_vector);
-      }
-
+    const GeometryParameters               &g = access.parameters.geometry;
     std::vector<DataOutBase::Patch<2, dim>> patches;
     for (const auto &face : access.contact->master_face_nodes())
       {
         bool inside = true;
         for (const unsigned int n : face)
           inside = inside && in_solution_zone(g, nodes[n]);
-        if (!inside)
-          continue;
-        DataOutBase::Patch<2, dim> patch;
-        patch.patch_index    = patches.size();
-        patch.reference_cell = ReferenceCells::Quadrilateral;
-        patch.data.reinit(names.size(), 4);
-        for (unsigned int v = 0; v < 4; ++v)
-          {
-            const NodalContact &m = nodes[face[v]];
-            patch.vertices[v]     = m.X;
-            const auto row        = patch_field_values(m);
-            for (unsigned int k = 0; k < names.size(); ++k)
-              patch.data(k, v) = row[k];
-          }
-        patches.push_back(std::move(patch));
+        if (inside)
+          patches.push_back(face_patch(face, nodes, false, patches.size()));
       }
+    write_quads(access, patches, file_name);
+  }
 
-    DataOutBase::VtkFlags flags;
-    flags.time              = access.solver.time();
-    flags.compression_level = vtu_compression_level(access.parameters.output.vtu_compression);
-    std::ostringstream out;
-    DataOutBase::write_vtu(patches, names, vectors, flags, out);
-    access.write_file(file_name, out.str());
+
+
+  // The same fields on the wheel tread: every slave face of the first pass
+  // whose four nodes are contact candidates (their current positions are
+  // kept) and lie, at those positions, over the solution zone, drawn at the
+  // current positions, so that it lies on the rail top's surface where the
+  // two touch.
+  void
+  write_tread_surface(const SimulatorAccess           &access,
+                      const std::vector<NodalContact> &nodes,
+                      const std::string               &file_name)
+  {
+    const GeometryParameters               &g = access.parameters.geometry;
+    std::vector<DataOutBase::Patch<2, dim>> patches;
+    for (const auto &face : access.contact->candidate_slave_faces())
+      {
+        bool inside = true;
+        for (const unsigned int n : face)
+          inside = inside && std::abs(nodes[n].x[0]) <= 0.5 * g.zone_length + 1e-9 &&
+                   std::abs(nodes[n].x[1]) <= g.zone_half_width + 1e-9;
+        if (inside)
+          patches.push_back(face_patch(face, nodes, true, patches.size()));
+      }
+    write_quads(access, patches, file_name);
   }
 } // namespace WheelRail

@@ -6,7 +6,12 @@
 # nodes of patch_NAME.csv, and the point data equal to the CSV columns
 # (pressure, shear_x, |shear|, micro-slip, COF, the state from the flags) to
 # single precision, the vectors with three components; the cells tile the
-# zone's rail top (their area against the nodes' extent).
+# zone's rail top (their area against the nodes' extent). The tread side,
+# patch_tread_NAME.vtu (the wheel's candidate faces over the zone at their
+# current positions): quadrilaterals with the same fields, whose integrals of
+# pressure and shear_x (VTK's vtkIntegrateAttributes) carry the rail top's
+# within 3 % and 5 % (the two bodies' faces differ) and the normal force of
+# the statistics within 3 %.
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
@@ -61,4 +66,38 @@ for name in ("t-5.7us", "t", "t+5.7us"):
     print("  surface area %.2f mm^2, extent of the nodes %.2f mm^2 (ratio %.4f, limit 1 +- 0.01)"
           % (area * 1e6, extent * 1e6, area / extent))
     assert abs(area / extent - 1) < 0.01
+
+# the tread side against the rail top and the statistics' F_N at each instant
+stats = np.loadtxt("surface_run/statistics")
+heads = [l.split(":", 1)[1].strip() for l in open("surface_run/statistics") if l[:2] == "# " and l[2:3].isdigit()]
+FN = stats[:, heads.index("F_N [N]")]
+
+def integrals(grid):
+    f = vtk.vtkIntegrateAttributes()
+    f.SetInputData(grid)
+    f.Update()
+    pd = f.GetOutput().GetPointData()
+    return pd.GetArray("pressure_Pa").GetValue(0), pd.GetArray("shear_Pa").GetTuple3(0)[0]
+
+for name in ("t-5.7us", "t", "t+5.7us"):
+    grids = []
+    for prefix in ("patch_", "patch_tread_"):
+        reader = vtk.vtkXMLUnstructuredGridReader()
+        reader.SetFileName("surface_run/%s%s.vtu" % (prefix, name))
+        reader.Update()
+        grids.append(reader.GetOutput())
+    rail, tread = grids
+    cells = tread.GetNumberOfCells()
+    assert cells > 0 and all(tread.GetCellType(i) == vtk.VTK_QUAD for i in range(cells)), "not quadrilaterals"
+    assert tread.GetPointData().GetArray("shear_Pa").GetNumberOfComponents() == 3
+    p_tread = vtk_to_numpy(tread.GetPointData().GetArray("pressure_Pa"))
+    P_r, Q_r = integrals(rail)
+    P_t, Q_t = integrals(tread)
+    t = tread.GetFieldData().GetArray("TIME").GetValue(0)
+    F_N = FN[np.argmin(np.abs(stats[:, 1] - t))]
+    print("patch_tread_%s.vtu: %d quadrilaterals, %d vertices in contact; integral of p %.2f kN "
+          "(rail top %.2f kN, F_N of the statistics %.2f kN), of shear_x %.4f kN (rail top %.4f kN)"
+          % (name, cells, int((p_tread > 0).sum()), P_t / 1e3, P_r / 1e3, F_N / 1e3, Q_t / 1e3, Q_r / 1e3))
+    assert (p_tread > 0).sum() > 0
+    assert abs(P_t / P_r - 1) < 0.03 and abs(P_t / F_N - 1) < 0.03 and abs(Q_t / Q_r - 1) < 0.05
 PY

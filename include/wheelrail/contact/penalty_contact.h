@@ -240,6 +240,12 @@ namespace WheelRail
      *  each face's four nodes (lexicographic) in master_node_results(). */
     std::vector<std::array<unsigned int, 4>>
     master_face_nodes() const;
+    /** The slave faces of the first pass (the wheel tread) whose four nodes
+     *  are candidates of the last search, so that their current positions
+     *  are known: the indices of each face's four nodes (lexicographic) in
+     *  slave_node_results(). */
+    std::vector<std::array<unsigned int, 4>>
+    candidate_slave_faces() const;
     /** The tolerance eps_T of eq. 5 for the slaves of pass @p p: 0.3 % of
      *  their largest |F_t| [N]. */
     double
@@ -363,12 +369,14 @@ namespace WheelRail
     {
       std::vector<unsigned int>     slave_node; ///< contact-node index per slave
       std::vector<ContactNodeState> slaves;
-      std::vector<MasterFace>       faces;
-      std::vector<unsigned int>     candidate_slaves;
-      std::vector<unsigned int>     candidate_faces;
-      std::vector<unsigned int>     face_offsets; ///< CSR: slave -> faces
-      std::vector<unsigned int>     face_lists;
-      std::vector<FaceBound>        bounds; ///< per face, computed when first needed
+      /** The slave boundary's faces: their four slaves (lexicographic). */
+      std::vector<std::array<unsigned int, 4>> slave_faces;
+      std::vector<MasterFace>                  faces;
+      std::vector<unsigned int>                candidate_slaves;
+      std::vector<unsigned int>                candidate_faces;
+      std::vector<unsigned int>                face_offsets; ///< CSR: slave -> faces
+      std::vector<unsigned int>                face_lists;
+      std::vector<FaceBound>                   bounds; ///< per face, computed when first needed
     };
     /** A candidate master face at a contact node: what its averaged normal sums. */
     struct NormalEntry

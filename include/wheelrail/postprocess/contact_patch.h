@@ -73,10 +73,21 @@ namespace WheelRail
                       const std::string               &file_name);
 
   /**
+   * The same fields of @p nodes (slave_node_results()) on the wheel tread:
+   * the first pass's slave faces whose nodes are contact candidates and lie
+   * over the solution zone, at the nodes' current positions.
+   */
+  void
+  write_tread_surface(const SimulatorAccess           &access,
+                      const std::vector<NodalContact> &nodes,
+                      const std::string               &file_name);
+
+  /**
    * Contact-patch snapshots at the instants of SPEC 5.5: when the patch
    * centre passes x = -V dt_s, 0, +V dt_s (dt_s = 5.7 us), the rail-top
    * nodes of the solution zone as patch_NAME.csv and, on the rail-top
-   * faces, patch_NAME.vtu (write_patch_surface()); with
+   * faces, patch_NAME.vtu (write_patch_surface()), on the tread faces
+   * over the zone patch_tread_NAME.vtu (write_tread_surface()); with
    * Output/Patch averaging window > 0, the time means over that window
    * centred on each instant as patch_NAME_mean.csv.
    * Active with a wheelset and contact.
