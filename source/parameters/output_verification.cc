@@ -65,6 +65,13 @@ namespace WheelRail
                       "patch_series.h5, which patch_series.xdmf lists for "
                       "ParaView (a movie of the patch), range [0, 1e9]; 0 = none. "
                       "The paper's 175 kHz sampling is every 219 steps of 2.6e-8 s.");
+    prm.declare_entry("Patch series tread",
+                      "true",
+                      Patterns::Bool(),
+                      "Whether the patch series also holds the wheel tread's faces "
+                      "over the solution zone, each frame with its own mesh at the "
+                      "current positions (patch_series_tread.xdmf) [-]: about 125 kB "
+                      "per frame on the paper mesh, against 18 kB for the rail top.");
     prm.declare_entry("Probe point",
                       "0, 0, 0",
                       vector_pattern(),
@@ -136,6 +143,7 @@ namespace WheelRail
     vtu_compression       = prm.get("VTU compression");
     patch_window          = prm.get_double("Patch averaging window");
     patch_series_interval = prm.get_integer("Patch series interval");
+    patch_series_tread    = prm.get_bool("Patch series tread");
     probe_point           = Point<3>(get_vector(prm, "Probe point"));
     probe_component       = prm.get_integer("Probe component");
     timing_warmup_steps   = prm.get_integer("Timing warm-up steps");

@@ -7,6 +7,7 @@
 
 #include <hdf5.h>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -31,7 +32,7 @@ namespace WheelRail
     const unsigned int n_series_fields = 6;
 
     /** A dataset of @p dims (rank 1-3) of @p type, the first dimension
-     *  unlimited if @p extendable, chunked by one frame, gzip. */
+     *  unlimited if @p extendable, chunked by one frame, shuffled and gzip. */
     hid_t
     create(const hid_t                 parent,
            const std::string          &name,
@@ -50,6 +51,7 @@ namespace WheelRail
       const hid_t space      = H5Screate_simple(dims.size(), dims.data(), maxdims.data());
       const hid_t properties = H5Pcreate(H5P_DATASET_CREATE);
       check(H5Pset_chunk(properties, chunk.size(), chunk.data()), "chunk " + name);
+      check(H5Pset_shuffle(properties), "shuffle " + name);
       check(H5Pset_deflate(properties, 4), "compress " + name);
       check(H5Pset_obj_track_times(properties, false), "switch off time stamps");
       const hid_t set =
@@ -58,6 +60,27 @@ namespace WheelRail
       H5Pclose(properties);
       H5Sclose(space);
       return set;
+    }
+
+    /** A fixed dataset @p name of @p dims (none zero) in @p parent from @p data. */
+    void
+    write_dataset(const hid_t                 parent,
+                  const std::string          &name,
+                  const std::vector<hsize_t> &dims,
+                  const hid_t                 file_type,
+                  const hid_t                 memory_type,
+                  const void                 *data)
+    {
+      const hid_t set = create(parent, name, dims, file_type, false);
+      check(H5Dwrite(set, memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data), "write " + name);
+      H5Dclose(set);
+    }
+
+    /** The name of tread frame @p k's group. */
+    std::string
+    tread_group(const unsigned long k)
+    {
+      return "tread/" + std::to_string(k);
     }
 
     /** Append row @p k (dims[1:] from @p data) to the extendable dataset @p name. */
@@ -173,6 +196,7 @@ namespace WheelRail
                             true));
           }
         H5Gclose(group);
+        H5Gclose(H5Gcreate2(file, "tread", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
       }
     else
       {
@@ -215,6 +239,38 @@ namespace WheelRail
             check(H5Dset_extent(set, dims), "cut " + field.name);
             H5Dclose(set);
           }
+        // the tread frames: sizes of those kept, the later groups removed
+        tread_sizes.assign(frames, {{0, 0}});
+        for (unsigned long k = 0; k < frames; ++k)
+          if (H5Lexists(file, tread_group(k).c_str(), H5P_DEFAULT) > 0)
+            for (unsigned int which = 0; which < 2; ++which)
+              {
+                const std::string name = tread_group(k) + (which == 0 ? "/points" : "/quads");
+                const hid_t       set  = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+                check(set, "open " + name);
+                const hid_t space = H5Dget_space(set);
+                hsize_t     dims[2];
+                H5Sget_simple_extent_dims(space, dims, nullptr);
+                H5Sclose(space);
+                H5Dclose(set);
+                tread_sizes[k][which] = dims[0];
+              }
+        const hid_t tread = H5Gopen2(file, "tread", H5P_DEFAULT);
+        check(tread, "open tread");
+        H5G_info_t info;
+        check(H5Gget_info(tread, &info), "read tread");
+        std::vector<std::string> later;
+        for (hsize_t i = 0; i < info.nlinks; ++i)
+          {
+            char name[32] = {};
+            H5Lget_name_by_idx(
+              tread, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT);
+            if (std::stoul(name) >= frames)
+              later.emplace_back(name);
+          }
+        for (const std::string &name : later)
+          check(H5Ldelete(tread, name.c_str(), H5P_DEFAULT), "cut the tread frames");
+        H5Gclose(tread);
       }
   }
 
@@ -244,12 +300,79 @@ namespace WheelRail
           data.insert(data.end(), &v[field.first], &v[field.first] + field.components);
         append(file, "fields/" + field.name, H5T_NATIVE_FLOAT, data.data(), frame);
       }
+    write_tread_frame(frame);
     const double t = access.solver.time();
     append(file, "time", H5T_NATIVE_DOUBLE, &t, frame);
     check(H5Fflush(file, H5F_SCOPE_GLOBAL), "flush");
     times.resize(frame);
     times.push_back(t);
     write_xdmf();
+  }
+
+
+
+  void
+  PatchSeries::write_tread_frame(const unsigned long frame)
+  {
+    tread_sizes.resize(frame);
+    if (!access.parameters.output.patch_series_tread)
+      {
+        tread_sizes.push_back({{0, 0}});
+        return;
+      }
+    const auto nodes = access.contact->slave_node_results();
+    const auto faces = tread_faces_over_zone(access, nodes);
+    // the frame's own nodes, numbered as the faces reach them; VTK / XDMF
+    // quadrilaterals go round the cell, the faces are lexicographic
+    std::vector<int>          index(nodes.size(), -1);
+    std::vector<unsigned int> used;
+    std::vector<int>          quads;
+    for (const auto &face : faces)
+      for (const unsigned int v : {0u, 1u, 3u, 2u})
+        {
+          const unsigned int n = face[v];
+          if (index[n] < 0)
+            {
+              index[n] = used.size();
+              used.push_back(n);
+            }
+          quads.push_back(index[n]);
+        }
+    tread_sizes.push_back({{used.size(), faces.size()}});
+    if (faces.empty())
+      return;
+    const hid_t group =
+      H5Gcreate2(file, tread_group(frame).c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    check(group, "create " + tread_group(frame));
+    const hsize_t                                  n = used.size();
+    std::vector<float>                             points, area, data;
+    std::vector<std::array<float, n_patch_values>> values;
+    for (const unsigned int i : used)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          points.push_back(nodes[i].x[d]);
+        area.push_back(nodes[i].area);
+        values.push_back(patch_field_values(nodes[i]));
+      }
+    write_dataset(group, "points", {n, 3}, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, points.data());
+    write_dataset(
+      group, "quads", {hsize_t(faces.size()), 4}, H5T_STD_I32LE, H5T_NATIVE_INT, quads.data());
+    write_dataset(group, "area", {n}, H5T_IEEE_F32LE, H5T_NATIVE_FLOAT, area.data());
+    for (unsigned int f = 0; f < n_series_fields; ++f)
+      {
+        const PatchField &field = patch_fields()[f];
+        data.clear();
+        for (const auto &v : values)
+          data.insert(data.end(), &v[field.first], &v[field.first] + field.components);
+        write_dataset(group,
+                      field.name,
+                      field.components == 1 ? std::vector<hsize_t>{n} :
+                                              std::vector<hsize_t>{n, field.components},
+                      H5T_IEEE_F32LE,
+                      H5T_NATIVE_FLOAT,
+                      data.data());
+      }
+    H5Gclose(group);
   }
 
 
@@ -290,5 +413,41 @@ namespace WheelRail
       }
     x << "</Grid>\n</Domain>\n</Xdmf>\n";
     write_file_atomically(access.output_directory + "/patch_series.xdmf", x.str());
+
+    if (!access.parameters.output.patch_series_tread)
+      return;
+    // the tread: each frame its own mesh (the faces over the zone change as
+    // the wheel rolls), at the nodes' current positions
+    std::ostringstream w;
+    w << std::setprecision(10) << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n<Domain>\n"
+      << "<Grid Name=\"contact patch, wheel tread\" GridType=\"Collection\" "
+         "CollectionType=\"Temporal\">\n";
+    for (unsigned long k = 0; k < n_frames && k < tread_sizes.size(); ++k)
+      {
+        const unsigned long nodes = tread_sizes[k][0], quads = tread_sizes[k][1];
+        if (quads == 0)
+          continue;
+        const std::string h5 = file_name + ":/" + tread_group(k) + "/";
+        w << "<Grid Name=\"frame " << k << "\" GridType=\"Uniform\">\n<Time Value=\"" << times[k]
+          << "\"/>\n<Topology TopologyType=\"Quadrilateral\" NumberOfElements=\"" << quads
+          << "\">\n<DataItem Dimensions=\"" << quads << " 4\" NumberType=\"Int\" Format=\"HDF\">"
+          << h5 << "quads</DataItem>\n</Topology>\n"
+          << "<Geometry GeometryType=\"XYZ\">\n<DataItem Dimensions=\"" << nodes
+          << " 3\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">" << h5
+          << "points</DataItem>\n</Geometry>\n";
+        for (unsigned int f = 0; f < n_series_fields; ++f)
+          {
+            const std::string &name       = patch_fields()[f].name;
+            const unsigned int components = patch_fields()[f].components;
+            w << "<Attribute Name=\"" << name << "\" AttributeType=\""
+              << (components == 1 ? "Scalar" : "Vector") << "\" Center=\"Node\">\n"
+              << "<DataItem Dimensions=\"" << nodes << (components == 1 ? "" : " 3")
+              << "\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">" << h5 << name
+              << "</DataItem>\n</Attribute>\n";
+          }
+        w << "</Grid>\n";
+      }
+    w << "</Grid>\n</Domain>\n</Xdmf>\n";
+    write_file_atomically(access.output_directory + "/patch_series_tread.xdmf", w.str());
   }
 } // namespace WheelRail

@@ -134,13 +134,11 @@ namespace WheelRail
   // kept) and lie, at those positions, over the solution zone, drawn at the
   // current positions, so that it lies on the rail top's surface where the
   // two touch.
-  void
-  write_tread_surface(const SimulatorAccess           &access,
-                      const std::vector<NodalContact> &nodes,
-                      const std::string               &file_name)
+  std::vector<std::array<unsigned int, 4>>
+  tread_faces_over_zone(const SimulatorAccess &access, const std::vector<NodalContact> &nodes)
   {
-    const GeometryParameters               &g = access.parameters.geometry;
-    std::vector<DataOutBase::Patch<2, dim>> patches;
+    const GeometryParameters                &g = access.parameters.geometry;
+    std::vector<std::array<unsigned int, 4>> faces;
     for (const auto &face : access.contact->candidate_slave_faces())
       {
         bool inside = true;
@@ -148,8 +146,21 @@ namespace WheelRail
           inside = inside && std::abs(nodes[n].x[0]) <= 0.5 * g.zone_length + 1e-9 &&
                    std::abs(nodes[n].x[1]) <= g.zone_half_width + 1e-9;
         if (inside)
-          patches.push_back(face_patch(face, nodes, true, patches.size()));
+          faces.push_back(face);
       }
+    return faces;
+  }
+
+
+
+  void
+  write_tread_surface(const SimulatorAccess           &access,
+                      const std::vector<NodalContact> &nodes,
+                      const std::string               &file_name)
+  {
+    std::vector<DataOutBase::Patch<2, dim>> patches;
+    for (const auto &face : tread_faces_over_zone(access, nodes))
+      patches.push_back(face_patch(face, nodes, true, patches.size()));
     write_quads(access, patches, file_name);
   }
 } // namespace WheelRail

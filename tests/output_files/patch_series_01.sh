@@ -12,6 +12,10 @@
 #   accounts for 0.9e-4); limit 1e-3;
 # - the XDMF lists every frame with its time, and every HDF5 reference in it
 #   names a dataset of the file with the dimensions it states;
+# - the wheel tread's frames (/tread/K, patch_series_tread.xdmf): quads on
+#   the frame's own nodes, the tread nodes' normal forces (p A) against the
+#   statistics' F_N as for the rail top (limit 1e-3), the same references
+#   check;
 # - the resumed run's file and XDMF hold exactly the uninterrupted run's
 #   frames.
 # Arguments: the wheelrail executable, the source directory.
@@ -67,5 +71,33 @@ with h5py.File("whole/patch_series.h5", "r") as f, h5py.File("split/patch_series
         checked += 1
     print("patch_series.xdmf: %d frames, %d HDF5 references, each a dataset of the stated dimensions"
           % (len(grids), checked))
-assert open("whole/patch_series.xdmf").read() == open("split/patch_series.xdmf").read()
+    # the tread frames
+    tread = f["tread"]
+    assert sorted(tread, key=int) == sorted(g["tread"], key=int), "resumed run's tread frames differ"
+    errors, sizes = [], []
+    for key in tread:
+        k, fr = int(key), tread[key]
+        n, quads = fr["points"].shape[0], fr["quads"][()]
+        assert quads.min() >= 0 and quads.max() < n and len(np.unique(quads)) == n, "tread quads"
+        j = np.argmin(np.abs(time - t[k]))
+        errors.append(abs((fr["pressure_Pa"][()] * fr["area"][()]).sum() / fn[j] - 1))
+        sizes.append(n)
+        for name in fr:
+            assert np.array_equal(fr[name][()], g["tread"][key][name][()]), "resumed tread differs"
+    print("tread: %d frames of %d-%d nodes; sum of p A against F_N: largest difference %.1e (limit 1e-3)"
+          % (len(errors), min(sizes), max(sizes), max(errors)))
+    assert len(errors) == len(t) and max(errors) < 1e-3
+    root = ET.parse("whole/patch_series_tread.xdmf").getroot()
+    grids = root.findall("./Domain/Grid/Grid")
+    assert len(grids) == len(tread)
+    checked = 0
+    for item in root.iter("DataItem"):
+        name = item.text.strip().split(":", 1)[1]
+        dims = tuple(int(v) for v in item.get("Dimensions").split())
+        assert name in f and f[name].shape == dims, "tread XDMF reference %s %s" % (name, dims)
+        checked += 1
+    print("patch_series_tread.xdmf: %d frames, %d HDF5 references, each a dataset of the stated "
+          "dimensions" % (len(grids), checked))
+for name in ("patch_series.xdmf", "patch_series_tread.xdmf"):
+    assert open("whole/" + name).read() == open("split/" + name).read(), name
 PY

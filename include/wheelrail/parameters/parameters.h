@@ -276,6 +276,7 @@ namespace WheelRail
     std::string   vtu_compression;       ///< "fast", "best" or "none"
     double        patch_window;          ///< window of the patch means [s], 0 = none
     unsigned int  patch_series_interval; ///< steps between patch-series frames, 0 = none
+    bool          patch_series_tread;    ///< the series holds the tread's frames too
     Point<3>      probe_point;
     unsigned int  probe_component;
     unsigned int  timing_warmup_steps;

@@ -81,6 +81,11 @@ namespace WheelRail
   write_tread_surface(const SimulatorAccess           &access,
                       const std::vector<NodalContact> &nodes,
                       const std::string               &file_name);
+  /** The faces of write_tread_surface(): the contact's candidate slave faces
+   *  whose four nodes (@p nodes = slave_node_results()) lie over the solution
+   *  zone at their current positions. */
+  std::vector<std::array<unsigned int, 4>>
+  tread_faces_over_zone(const SimulatorAccess &access, const std::vector<NodalContact> &nodes);
 
   /**
    * Contact-patch snapshots at the instants of SPEC 5.5: when the patch

@@ -8,6 +8,7 @@
 
 #include <wheelrail/postprocess/postprocessor.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,7 +23,10 @@ namespace WheelRail
    * tributary areas, m^2), /time (frames) and per frame /fields/NAME
    * (frames x nodes, or x 3 for vectors, single precision): pressure_Pa,
    * shear_Pa, slip_velocity_m_s, slip_rate_m_s, cof,
-   * state_0free_1adhesion_2slip. Rank 0 writes (the contact state is
+   * state_0free_1adhesion_2slip. The wheel tread's faces over the zone
+   * (write_tread_surface()), whose set changes as the wheel rolls, go to
+   * one group per frame, /tread/K: points (current positions), quads, area
+   * and the same fields, listed by patch_series_tread.xdmf. Rank 0 writes (the contact state is
    * replicated); each frame is flushed, and patch_series.xdmf (rewritten
    * atomically) lists the frames for ParaView.
    *
@@ -52,6 +56,12 @@ namespace WheelRail
      *  @p frames frames (a resumed run). */
     void
     open(const unsigned long frames);
+    /** The wheel tread's faces over the zone at frame @p frame: group
+     *  /tread/FRAME with points (current positions), quads, area and the
+     *  fields, none if no face is there. */
+    void
+    write_tread_frame(const unsigned long frame);
+    /** patch_series.xdmf (rail top) and patch_series_tread.xdmf (tread). */
     void
     write_xdmf() const;
 
@@ -60,6 +70,8 @@ namespace WheelRail
     std::vector<unsigned int> zone_nodes; ///< indices in master_node_results()
     unsigned int              n_quads = 0;
     std::vector<double>       times; ///< of the frames so far
+    /** Nodes and quadrilaterals of each tread frame (0 = none written). */
+    std::vector<std::array<unsigned long, 2>> tread_sizes;
   };
 } // namespace WheelRail
 
