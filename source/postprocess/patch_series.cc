@@ -76,6 +76,17 @@ namespace WheelRail
       H5Dclose(set);
     }
 
+    /** The values of @p field at each node, components interleaved. */
+    std::vector<float>
+    field_column(const std::vector<std::array<float, n_patch_values>> &values,
+                 const PatchField                                     &field)
+    {
+      std::vector<float> data;
+      for (const auto &v : values)
+        data.insert(data.end(), &v[field.first], &v[field.first] + field.components);
+      return data;
+    }
+
     /** The name of tread frame @p k's group. */
     std::string
     tread_group(const unsigned long k)
@@ -291,14 +302,14 @@ namespace WheelRail
     std::vector<std::array<float, n_patch_values>> values;
     for (const unsigned int i : zone_nodes)
       values.push_back(patch_field_values(nodes[i]));
-    std::vector<float> data;
     for (unsigned int f = 0; f < n_series_fields; ++f)
       {
         const PatchField &field = patch_fields()[f];
-        data.clear();
-        for (const auto &v : values)
-          data.insert(data.end(), &v[field.first], &v[field.first] + field.components);
-        append(file, "fields/" + field.name, H5T_NATIVE_FLOAT, data.data(), frame);
+        append(file,
+               "fields/" + field.name,
+               H5T_NATIVE_FLOAT,
+               field_column(values, field).data(),
+               frame);
       }
     write_tread_frame(frame);
     const double t = access.solver.time();
@@ -345,7 +356,7 @@ namespace WheelRail
       H5Gcreate2(file, tread_group(frame).c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     check(group, "create " + tread_group(frame));
     const hsize_t                                  n = used.size();
-    std::vector<float>                             points, area, data;
+    std::vector<float>                             points, area;
     std::vector<std::array<float, n_patch_values>> values;
     for (const unsigned int i : used)
       {
@@ -361,16 +372,13 @@ namespace WheelRail
     for (unsigned int f = 0; f < n_series_fields; ++f)
       {
         const PatchField &field = patch_fields()[f];
-        data.clear();
-        for (const auto &v : values)
-          data.insert(data.end(), &v[field.first], &v[field.first] + field.components);
         write_dataset(group,
                       field.name,
                       field.components == 1 ? std::vector<hsize_t>{n} :
                                               std::vector<hsize_t>{n, field.components},
                       H5T_IEEE_F32LE,
                       H5T_NATIVE_FLOAT,
-                      data.data());
+                      field_column(values, field).data());
       }
     H5Gclose(group);
   }

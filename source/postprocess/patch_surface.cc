@@ -143,8 +143,7 @@ namespace WheelRail
       {
         bool inside = true;
         for (const unsigned int n : face)
-          inside = inside && std::abs(nodes[n].x[0]) <= 0.5 * g.zone_length + 1e-9 &&
-                   std::abs(nodes[n].x[1]) <= g.zone_half_width + 1e-9;
+          inside = inside && over_solution_zone(g, nodes[n].x);
         if (inside)
           faces.push_back(face);
       }

@@ -266,9 +266,8 @@ namespace WheelRail
     stable_dt = prm.solver.courant_factor * Utilities::MPI::min(min_dt, mpi_communicator);
 
     // the force loop's copy with single-precision geometric factors
-    single_precision_geometry = prm.solver.single_precision_geometry;
     batch_single.clear();
-    if (single_precision_geometry)
+    if (prm.solver.single_precision_geometry)
       {
         batch_single.resize_fast(std::size_t(n_batches) * SingleField::n_double);
         for (unsigned int batch = 0; batch < n_batches; ++batch)

@@ -38,7 +38,7 @@ namespace WheelRail
     const double *V            = v_in ? v_in->begin() : nullptr;
     double       *F            = f_out.begin();
     const bool    with_damping = (v_in != nullptr) && damping != DampingModel::none;
-    if (single_precision_geometry)
+    if (prm.solver.single_precision_geometry)
       return element_loop<SingleData>(
         batch_single.data(), SingleField::n_double, U, V, F, with_damping);
     return element_loop<DoubleData>(batch_data.data(), Field::n_fields * W, U, V, F, with_damping);

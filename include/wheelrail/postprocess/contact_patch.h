@@ -32,14 +32,21 @@ namespace WheelRail
   void
   write_contact_nodes(const SimulatorAccess &access, const std::string &name);
 
+  /** Whether point @p p lies over the solution zone of @p g (|x| <= length
+   *  / 2, |y| <= half width). */
+  inline bool
+  over_solution_zone(const GeometryParameters &g, const Point<3> &p)
+  {
+    return std::abs(p[0]) <= 0.5 * g.zone_length + 1e-9 &&
+           std::abs(p[1]) <= g.zone_half_width + 1e-9;
+  }
+
   /** Whether rail-top node @p m (of master_node_results()) lies in the
-   *  solution zone of @p g (|x| <= length / 2, |y| <= half width) with a
-   *  tributary area: the nodes of the patch files. */
+   *  solution zone with a tributary area: the nodes of the patch files. */
   inline bool
   in_solution_zone(const GeometryParameters &g, const NodalContact &m)
   {
-    return std::abs(m.X[0]) <= 0.5 * g.zone_length + 1e-9 &&
-           std::abs(m.X[1]) <= g.zone_half_width + 1e-9 && m.area > 0;
+    return over_solution_zone(g, m.X) && m.area > 0;
   }
 
   /** A contact field of the patch's surface files: its name and its

@@ -295,10 +295,9 @@ namespace WheelRail
     unsigned int          n_cells   = 0;
     unsigned int          n_batches = 0;
     AlignedVector<double> batch_data; ///< [batch][field][lane]
-    /** Solver/Element geometry precision = single: the force loop reads
-     *  batch_single (layout ElementKernel::SingleField), everything else
-     *  batch_data. */
-    bool                      single_precision_geometry = false;
+    /** With Time integration/Element geometry precision = single the force
+     *  loop reads this copy (layout ElementKernel::SingleField), everything
+     *  else batch_data; empty otherwise. */
     AlignedVector<double>     batch_single;
     std::vector<unsigned int> batch_nodes;      ///< [batch][vertex][lane]
     std::vector<unsigned int> batch_cell_index; ///< active cell index
