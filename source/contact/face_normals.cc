@@ -41,17 +41,16 @@ namespace WheelRail
     // their projection is always computed. In closed form,
     // x = c + xi g1 + eta g2 + xi eta w and x_xi x x_eta = n0 + xi (g1 x w)
     // + eta (w x g2).
-    constexpr double  e    = 1.1; // the extension
-    const MasterFace &face = pass.faces[f];
-    const Point<dim> &p0 = node_x[face.node[0]], &p1 = node_x[face.node[1]],
-                     &p2 = node_x[face.node[2]], &p3 = node_x[face.node[3]];
-    const Tensor<1, dim> g1     = 0.25 * ((p1 - p0) + (p3 - p2));
-    const Tensor<1, dim> g2     = 0.25 * ((p2 - p0) + (p3 - p1));
-    const Tensor<1, dim> w      = 0.25 * ((p0 - p1) + (p3 - p2));
-    bound.centre                = Point<dim>(0.25 * (p0 + p1 + p2 + p3));
-    const Tensor<1, dim> n0     = cross_product_3d(g1, g2);
-    const double         length = n0.norm();
-    bound.usable                = length > 0;
+    constexpr double  e      = 1.1; // the extension
+    const MasterFace &face   = pass.faces[f];
+    bound.frame              = FaceFrame(node_x[face.node[0]],
+                            node_x[face.node[1]],
+                            node_x[face.node[2]],
+                            node_x[face.node[3]]);
+    const Tensor<1, dim> &g1 = bound.frame.g1, &g2 = bound.frame.g2, &w = bound.frame.w;
+    const Tensor<1, dim>  n0     = cross_product_3d(g1, g2);
+    const double          length = n0.norm();
+    bound.usable                 = length > 0;
     if (!bound.usable)
       return bound;
     bound.normal = n0 / length;

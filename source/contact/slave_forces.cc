@@ -71,7 +71,7 @@ namespace WheelRail
                 // face_bound()): project() would give out > 0.1,
                 // skipped below; most candidates are neighbours of the
                 // face under the slave and end here
-                const Tensor<1, dim> d  = xs - bound.centre;
+                const Tensor<1, dim> d  = xs - bound.frame.centre;
                 const double         dd = d.norm_square();
                 const double         dn = d * bound.normal;
                 const double         reach =
@@ -84,8 +84,13 @@ namespace WheelRail
                                   &node_x[face.node[1]],
                                   &node_x[face.node[2]],
                                   &node_x[face.node[3]]}};
-            double            xi, eta;
-            bf.project(xs, xi, eta);
+            // a projection beyond 1.1 is not used: on a nearly flat face
+            // Newton may stop as soon as it is clearly there
+            double xi, eta;
+            bound.frame.project(xs,
+                                xi,
+                                eta,
+                                bound.usable ? 0.1 : std::numeric_limits<double>::infinity());
             const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
             if (out > 0.1)
               continue;

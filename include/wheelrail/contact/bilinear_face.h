@@ -112,19 +112,66 @@ namespace WheelRail
         eta = be;
       }
 
-      /** Closest point by Newton (Gauss-Newton) in the face coordinates. */
+      /** Closest point by Newton (Gauss-Newton) in the face coordinates
+       *  (FaceFrame::project()). */
       void
-      project(const Point<dim> &xs, double &xi, double &eta) const
+      project(const Point<dim> &xs, double &xi, double &eta) const;
+    };
+
+
+
+    /**
+     * A bilinear face in closed form, x(xi, eta) = c + xi g1 + eta g2 +
+     * xi eta w (the same surface as BilinearFace's sum of shape functions),
+     * for the closest-point projection: its Newton iterations need no
+     * corner lookups.
+     */
+    struct FaceFrame
+    {
+      Point<dim>     centre;
+      Tensor<1, dim> g1, g2, w;
+
+      FaceFrame() = default;
+
+      FaceFrame(const Point<dim> &p0,
+                const Point<dim> &p1,
+                const Point<dim> &p2,
+                const Point<dim> &p3)
+        : centre(0.25 * (p0 + p1 + p2 + p3))
+        , g1(0.25 * ((p1 - p0) + (p3 - p2)))
+        , g2(0.25 * ((p2 - p0) + (p3 - p1)))
+        , w(0.25 * ((p0 - p1) + (p3 - p2)))
+      {}
+
+      explicit FaceFrame(const BilinearFace &f)
+        : FaceFrame(*f.p[0], *f.p[1], *f.p[2], *f.p[3])
+      {}
+
+      /**
+       * Closest point of @p xs by Gauss-Newton from the face centre, to a
+       * step below 1e-13 in (xi, eta). The callers use a projection only
+       * within max(|xi|, |eta|) <= 1 + @p wanted_out; with a finite @p
+       * wanted_out the iteration stops early once the iterate lies beyond
+       * it by more than twice its last step (from the second step on).
+       * Gauss-Newton contracts the error by |r| |w| / |g|^2 per step, small
+       * on the nearly flat faces this is used for (FaceBound::usable), so
+       * the converged point lies beyond as well and the caller's decision
+       * is the same.
+       */
+      void
+      project(const Point<dim> &xs,
+              double           &xi,
+              double           &eta,
+              const double      wanted_out = std::numeric_limits<double>::infinity()) const
       {
-        xi = eta = 0;
-        Point<dim>     x;
-        Tensor<1, dim> dxi, deta;
-        double         N[4];
-        bool           was_clamped = false;
+        xi = eta                         = 0;
+        const Tensor<1, dim> d           = xs - centre;
+        bool                 was_clamped = false;
         for (unsigned int it = 0; it < 20; ++it)
           {
-            evaluate(xi, eta, x, dxi, deta, N);
-            const Tensor<1, dim> r   = x - xs;
+            const Tensor<1, dim> dxi  = g1 + eta * w;
+            const Tensor<1, dim> deta = g2 + xi * w;
+            const Tensor<1, dim> r    = xi * g1 + eta * g2 + (xi * eta) * w - d;
             const double         a11 = dxi * dxi, a12 = dxi * deta, a22 = deta * deta;
             const double         b1 = dxi * r, b2 = deta * r;
             const double         det = a11 * a22 - a12 * a12;
@@ -135,7 +182,11 @@ namespace WheelRail
             const bool   clamped = std::abs(xi + dx) > 3. || std::abs(eta + de) > 3.;
             xi                   = std::clamp(xi + dx, -3., 3.);
             eta                  = std::clamp(eta + de, -3., 3.);
-            if (std::abs(dx) + std::abs(de) < 1e-13)
+            const double step    = std::abs(dx) + std::abs(de);
+            if (step < 1e-13)
+              break;
+            if (it > 0 && !clamped &&
+                std::max(std::abs(xi), std::abs(eta)) - 1. - 2. * step > wanted_out)
               break;
             // the closest point lies far outside the face (beyond the
             // clamp twice in a row): the callers only use projections
@@ -147,6 +198,14 @@ namespace WheelRail
           }
       }
     };
+
+
+
+    inline void
+    BilinearFace::project(const Point<dim> &xs, double &xi, double &eta) const
+    {
+      FaceFrame(*this).project(xs, xi, eta);
+    }
   } // namespace ContactGeometry
 } // namespace WheelRail
 

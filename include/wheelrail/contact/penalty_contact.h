@@ -30,6 +30,7 @@
 
 #include <wheelrail/base/checkpoint.h>
 #include <wheelrail/base/stopwatch.h>
+#include <wheelrail/contact/bilinear_face.h>
 #include <wheelrail/contact/friction_law.h>
 #include <wheelrail/contact/friction_model.h>
 #include <wheelrail/parameters/parameters.h>
@@ -358,12 +359,12 @@ namespace WheelRail
      */
     struct FaceBound
     {
-      Point<dim>     centre;
-      Tensor<1, dim> normal; ///< unit normal at xi = eta = 0
-      double         radius     = 0;
-      double         sin_angle  = 0;
-      bool           usable     = false; ///< nearly flat and not degenerate
-      unsigned long  evaluation = 0;     ///< add_forces() call it was computed in
+      ContactGeometry::FaceFrame frame;  ///< the face in closed form
+      Tensor<1, dim>             normal; ///< unit normal at xi = eta = 0
+      double                     radius     = 0;
+      double                     sin_angle  = 0;
+      bool                       usable     = false; ///< nearly flat and not degenerate
+      unsigned long              evaluation = 0;     ///< add_forces() call it was computed in
     };
     struct Pass
     {
