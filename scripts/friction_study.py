@@ -224,6 +224,36 @@ def history_figure(runs, png):
            ["mu_a = F_x / F_N", "rigid creepage (v_x - omega r) / v_x [1e-3]"])
 
 
+def history_table(runs, window=0.002, at=(-0.06, 0.0, 0.01)):
+    """The run-away of slip under a torque above the creep curve's peak: mu_a's
+    peak and where, mu_a and the creepage at the wheel positions AT (means over
+    WINDOW of rolling), and the creepage's growth between the first two."""
+    where = ", ".join(f"{x * 1e3:g}" for x in at)
+    head = (f"| run | mu_a peak at x_w [mm] | mu_a at x_w = {where} mm | creepage [1e-3] at the same | "
+            f"creepage growth from {at[0] * 1e3:g} to {at[1] * 1e3:g} mm [1e-3 per 100 mm] |")
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
+    for label, d in runs:
+        names, S = hc.read_statistics(d)
+        x = hc.column(names, S, "wheel x")
+        mu = hc.column(names, S, "mu_a")
+        xi = hc.column(names, S, "creepage")
+
+        def mean_at(v, c):
+            near = np.abs(x - c) <= 0.5 * window
+            return v[near].mean() if near.any() else np.nan
+
+        centres = np.arange(x[0] + 0.5 * window, x[-1] - 0.5 * window, 0.25 * window)
+        smooth = np.array([mean_at(mu, c) for c in centres])
+        k = int(np.nanargmax(smooth))
+        span = (x >= at[0]) & (x <= at[1])
+        growth = np.polyfit(x[span], xi[span], 1)[0] * 0.1 if span.sum() > 2 else np.nan
+        lines.append(f"| {label} | {smooth[k]:.4f} at {centres[k] * 1e3:.0f} | "
+                     + ", ".join(f"{mean_at(mu, c):.4f}" for c in at) + " | "
+                     + ", ".join(f"{mean_at(xi, c) * 1e3:.2f}" for c in at)
+                     + f" | {growth * 1e3:.2f} |")
+    return "\n".join(lines)
+
+
 def figures(results, patch_png, spectra_png):
     import matplotlib
     matplotlib.use("Agg")
@@ -276,7 +306,9 @@ def main():
             f.write(patch + "\n\n" + spectra + "\n")
     figures(results, args.figure, args.spectra)
     if args.history:
-        history_figure([(label, os.path.join(args.work, label)) for label, _ in results], args.history)
+        runs = [(label, os.path.join(args.work, label)) for label, _ in results]
+        print("\n" + history_table(runs))
+        history_figure(runs, args.history)
     if args.check:
         passed = True
         for item in args.check:
