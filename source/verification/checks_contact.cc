@@ -289,8 +289,8 @@ namespace WheelRail
                       << std::endl
                       << "  mean local COF of the contact nodes over the second half "
                       // one digit in the tests' output: in a saturated run
-                      // a round-off change moves it by 0.006 (0.3374 and
-                      // 0.3317 in wheelset_saturation_01)
+                      // (wheelset_saturation_01) a round-off change moves it
+                      // by about 0.006
                       << fmt(cof, in.access.robust_output_only() ? 1 : 5) << std::endl;
       in.result("achieved traction coefficient mu_a = F_L / F_N, mean over the second half",
                 fl / fn,
