@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace WheelRail
@@ -229,7 +230,14 @@ namespace WheelRail
         }
     node_area.resize(node_dof.size(), 0.);
     for (Pass &pass : passes)
-      pass.bounds.assign(pass.faces.size(), FaceBound());
+      {
+        pass.bounds.assign(pass.faces.size(), FaceBound());
+        pass.stiffness_cap.assign(pass.slaves.size(), std::numeric_limits<double>::infinity());
+        if (prm.penalty_stiffness == "area")
+          for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+            pass.stiffness_cap[s] =
+              prm.penalty_scale * bulk_modulus * pass.slaves[s].area / reference_length;
+      }
     node_normal.assign(node_dof.size(), Tensor<1, dim>());
     normal_evaluation.assign(node_dof.size(), 0);
     normal_offsets.assign(node_dof.size() + 1, 0);

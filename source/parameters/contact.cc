@@ -52,9 +52,11 @@ namespace WheelRail
                       "4): the stiffness per unit area, SF K A / V, grows as the "
                       "mesh is refined, so a wheel rolling from coarse into fine "
                       "faces is pushed up (the paper mesh: F_N from 140 to over "
-                      "400 kN); 'area': k = SF K A / h_ref, the same pressure per "
-                      "penetration SF K / h_ref on every face, equal to "
-                      "'segment' on cubic cells of size h_ref.");
+                      "400 kN); 'area': k = SF K min(A, A_s) / h_ref with A_s "
+                      "the slave node's tributary area, the same pressure per "
+                      "penetration SF K / h_ref on every face and on a fine "
+                      "mesh against a coarse one, equal to 'segment' on cubic "
+                      "cells of size h_ref.");
     prm.declare_entry("Penalty reference length",
                       "0",
                       Patterns::Double(0, 1),

@@ -240,7 +240,7 @@ namespace WheelRail
               << (cp.two_pass ? ", two-pass" : ", one-pass") << std::endl
               << "  penalty scale factor SF    : " << fmt(cp.penalty_scale) << std::endl;
         if (cp.penalty_stiffness == "area")
-          pcout << "  penalty stiffness          : k = SF K A / h_ref, h_ref = "
+          pcout << "  penalty stiffness          : k = SF K min(A, A_s) / h_ref, h_ref = "
                 << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
         pcout << "  friction law               : " << cp.friction_law;
         if (const auto law = contact->friction_law())

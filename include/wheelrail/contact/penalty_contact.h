@@ -348,7 +348,7 @@ namespace WheelRail
     struct MasterFace
     {
       unsigned int node[4];   ///< contact-node indices, lexicographic
-      double       stiffness; ///< k = SF K A^2 / V
+      double       stiffness; ///< SF K A^2 / V ('segment') or SF K A / h_ref ('area')
       double       sign;      ///< orientation making x_xi x x_eta outward
     };
     /**
@@ -370,6 +370,10 @@ namespace WheelRail
     {
       std::vector<unsigned int>     slave_node; ///< contact-node index per slave
       std::vector<ContactNodeState> slaves;
+      /** Per slave, the largest penalty stiffness it may take [N/m]: SF K A_s
+       *  / h_ref with its own area A_s under 'area', unbounded under
+       *  'segment' (see slave_stiffness()). */
+      std::vector<double> stiffness_cap;
       /** The slave boundary's faces: their four slaves (lexicographic). */
       std::vector<std::array<unsigned int, 4>> slave_faces;
       std::vector<MasterFace>                  faces;
@@ -466,6 +470,25 @@ namespace WheelRail
     /** node_x = X + u of the plan's nodes on every rank. */
     void
     gather_positions(const LinearAlgebra::distributed::Vector<double> &u, const GatherPlan &plan);
+    /**
+     * The penalty stiffness of slave @p s of @p pass on @p face. Under
+     * 'segment' the face's k = SF K A^2 / V (LS-DYNA). Under 'area' the
+     * smaller of the face's SF K A_m / h_ref and the slave's own
+     * SF K A_s / h_ref: a slave node smaller than the face it meets (a fine
+     * mesh against a coarse one) gets the pressure per penetration
+     * SF K / h_ref of its own area, not a spring as stiff as the large face
+     * (which would raise the pressure there A_m / A_s times and take the
+     * light node's frequency beyond the explicit step's limit); a slave
+     * larger than the face takes the face's stiffness, so that the face's
+     * light nodes get no stiffer a spring. This is the rule of LS-DYNA's
+     * stability-based stiffness (SOFT = 1), the smaller of the two sides,
+     * in areas instead of nodal masses.
+     */
+    double
+    slave_stiffness(const Pass &pass, const unsigned int s, const MasterFace &face) const
+    {
+      return std::min(face.stiffness, pass.stiffness_cap[s]);
+    }
     /** Closest point, penalty force and friction of this rank's share of
      *  the candidate slaves of @p pass (a block): their states only. */
     void
