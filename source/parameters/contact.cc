@@ -54,9 +54,11 @@ namespace WheelRail
                       "faces is pushed up (the paper mesh: F_N from 140 to over "
                       "400 kN); 'area': k = SF K min(A, A_s) / h_ref with A_s "
                       "the slave node's tributary area, the same pressure per "
-                      "penetration SF K / h_ref on every face and on a fine "
-                      "mesh against a coarse one, equal to 'segment' on cubic "
-                      "cells of size h_ref.");
+                      "penetration SF K / h_ref on every face, also where a "
+                      "fine mesh meets a coarse one (a slave larger than the "
+                      "face takes the face's stiffness, keeping the face's "
+                      "nodes stable), equal to 'segment' on cubic cells of "
+                      "size h_ref.");
     prm.declare_entry("Penalty reference length",
                       "0",
                       Patterns::Double(0, 1),
