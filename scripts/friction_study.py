@@ -37,7 +37,8 @@ Usage:
         exceeded): lead_eq6 (eq. 6 slip share of the leading half), eq5_eq6
         (|eq. 5 - eq. 6 slip share|), slip (|eq. 5 slip area - half-space|),
         trail_s (|trailing s_n / half-space - 1|, at t), trail_s_mean (the same
-        with the patch averaging window's mean), rms_q (shear RMS difference)
+        with the patch averaging window's mean of s_n, which the slip zone's
+        fluctuations raise), rms_q (shear RMS difference)
 """
 import argparse
 import os
@@ -142,7 +143,7 @@ def analyse(run, grid, length):
         # the steps it is in contact)
         c = M["contact"][rows] > 0.5
         xc = x[c]
-        trail = xc < 0.5 * (xc.max() + xc.min())
+        trail = hc.halves(xc)[1]
         out["trail_s_mean"] = np.mean(M["slip_velocity"][rows][c][trail] / M["contact"][rows][c][trail])
         a = r["axis"]
         q_hs = np.interp(x, a["x"], a["q_x"], left=0., right=0.)

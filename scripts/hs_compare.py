@@ -280,6 +280,14 @@ def compare_patch(run, instant="t", grid=DEFAULT_GRID):
                 seconds=time.time() - t0, law=law_text, instant=instant)
 
 
+def halves(x):
+    """Masks of the leading (x above the middle of the extent of @p x) and
+    trailing nodes. A node within 1e-3 of the extent of the middle belongs
+    to neither: on a symmetric row its side would be decided by round-off."""
+    mid, tol = 0.5 * (x.max() + x.min()), 1e-3 * (x.max() - x.min())
+    return x > mid + tol, x < mid - tol
+
+
 def slip_halves(run, r=None, instant="t"):
     """The slip state of the leading and trailing halves (in x, about the
     middle of the contact's extent) of the patch of RUN at @p instant: dict
@@ -291,19 +299,19 @@ def slip_halves(run, r=None, instant="t"):
     P = read_patch(run, instant)
     c = P["in_contact"] > 0
     x, share = P["x"][c], P["slip_share"][c]
-    lead = x > 0.5 * (x.max() + x.min())
+    lead, trail = halves(x)
     rows = axis_rows(P)
     rows = rows[c[rows]]
     xr, sr = P["x"][rows], P["slip_velocity"][rows]
-    lr = xr > 0.5 * (xr.max() + xr.min())
-    out = dict(lead_eq6=share[lead].mean(), trail_eq6=share[~lead].mean(),
-               lead_s=sr[lr].mean(), trail_s=sr[~lr].mean(), eq5=1. - P["adhesion_share"][c].mean())
+    lr, tr = halves(xr)
+    out = dict(lead_eq6=share[lead].mean(), trail_eq6=share[trail].mean(),
+               lead_s=sr[lr].mean(), trail_s=sr[tr].mean(), eq5=1. - P["adhesion_share"][c].mean())
     if r is not None:
         a = r["axis"]
         ca = a["contact"] > 0
         xa, sa = a["x"][ca], a["s"][ca]
-        la = xa > 0.5 * (xa.max() + xa.min())
-        out.update(hs_lead_s=sa[la].mean(), hs_trail_s=sa[~la].mean())
+        la, ta = halves(xa)
+        out.update(hs_lead_s=sa[la].mean(), hs_trail_s=sa[ta].mean())
     return out
 
 
