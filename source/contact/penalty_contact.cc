@@ -28,6 +28,7 @@ namespace WheelRail
     : prm(contact)
     , mpi_communicator(comm)
     , bulk_modulus(material.lambda() + 2. / 3. * material.mu())
+    , area_penalty(contact.penalty_stiffness == "area")
   {
     if (prm.friction_law != "none")
       {
@@ -161,12 +162,11 @@ namespace WheelRail
           thinnest = std::min(thinnest, part[i + 17] / part[i + 16]);
         }
     // penalty stiffness per face (SPEC 4; Contact/Penalty stiffness)
-    if (prm.penalty_stiffness == "area" && &pass == &passes.front())
+    if (area_penalty && &pass == &passes.front())
       reference_length = prm.penalty_reference_length > 0 ? prm.penalty_reference_length : thinnest;
     const auto stiffness = [&](const double area, const double volume) {
-      return prm.penalty_stiffness == "area" ?
-               prm.penalty_scale * bulk_modulus * area / reference_length :
-               prm.penalty_scale * bulk_modulus * area * area / volume;
+      return area_penalty ? area_stiffness(area) :
+                            prm.penalty_scale * bulk_modulus * area * area / volume;
     };
     std::sort(sorted_faces.begin(), sorted_faces.end(), [](const auto &a, const auto &b) {
       return lexicographic_less(a.first, b.first);
@@ -230,14 +230,7 @@ namespace WheelRail
         }
     node_area.resize(node_dof.size(), 0.);
     for (Pass &pass : passes)
-      {
-        pass.bounds.assign(pass.faces.size(), FaceBound());
-        pass.stiffness_cap.assign(pass.slaves.size(), std::numeric_limits<double>::infinity());
-        if (prm.penalty_stiffness == "area")
-          for (unsigned int s = 0; s < pass.slaves.size(); ++s)
-            pass.stiffness_cap[s] =
-              prm.penalty_scale * bulk_modulus * pass.slaves[s].area / reference_length;
-      }
+      pass.bounds.assign(pass.faces.size(), FaceBound());
     node_normal.assign(node_dof.size(), Tensor<1, dim>());
     normal_evaluation.assign(node_dof.size(), 0);
     normal_offsets.assign(node_dof.size() + 1, 0);

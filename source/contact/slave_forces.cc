@@ -129,7 +129,7 @@ namespace WheelRail
           }
 
         const MasterFace &face = pass.faces[best_face];
-        const double      k    = slave_stiffness(pass, s, face);
+        const double      k    = slave_stiffness(state, face);
         if (advance && state.face < 0)
           new_contact_depth = std::max(new_contact_depth, -best_gap);
         state.in_contact   = true;
@@ -355,7 +355,7 @@ namespace WheelRail
         if (!state.in_contact)
           continue;
         const MasterFace &face = pass.faces[state.face];
-        const double      k    = slave_stiffness(pass, s, face);
+        const double      k    = slave_stiffness(state, face);
         totals.max_penetration = std::max(totals.max_penetration, -state.gap);
         totals.elastic_energy += 0.5 * k * state.gap * state.gap;
         if (law && advance)

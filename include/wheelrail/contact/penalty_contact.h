@@ -370,10 +370,6 @@ namespace WheelRail
     {
       std::vector<unsigned int>     slave_node; ///< contact-node index per slave
       std::vector<ContactNodeState> slaves;
-      /** Per slave, the largest penalty stiffness it may take [N/m]: SF K A_s
-       *  / h_ref with its own area A_s under 'area', unbounded under
-       *  'segment' (see slave_stiffness()). */
-      std::vector<double> stiffness_cap;
       /** The slave boundary's faces: their four slaves (lexicographic). */
       std::vector<std::array<unsigned int, 4>> slave_faces;
       std::vector<MasterFace>                  faces;
@@ -485,9 +481,15 @@ namespace WheelRail
      * in areas instead of nodal masses.
      */
     double
-    slave_stiffness(const Pass &pass, const unsigned int s, const MasterFace &face) const
+    slave_stiffness(const ContactNodeState &slave, const MasterFace &face) const
     {
-      return std::min(face.stiffness, pass.stiffness_cap[s]);
+      return area_penalty ? std::min(face.stiffness, area_stiffness(slave.area)) : face.stiffness;
+    }
+    /** SF K A / h_ref: the 'area' penalty stiffness of the area @p area [N/m]. */
+    double
+    area_stiffness(const double area) const
+    {
+      return prm.penalty_scale * bulk_modulus * area / reference_length;
     }
     /** Closest point, penalty force and friction of this rank's share of
      *  the candidate slaves of @p pass (a block): their states only. */
@@ -511,6 +513,7 @@ namespace WheelRail
     /** The friction step at a slave node (law, slip rate, relaxation). */
     std::unique_ptr<FrictionModel> friction;
     double                         bulk_modulus;
+    bool                           area_penalty;         ///< Contact/Penalty stiffness = area
     double                         reference_length = 0; ///< h_ref of the 'area' penalty [m]
     std::shared_ptr<const Utilities::MPI::Partitioner> partitioner;
 
