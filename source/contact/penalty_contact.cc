@@ -199,7 +199,7 @@ namespace WheelRail
   PenaltyContact::setup(
     const DoFHandler<dim>                                    &dof_handler,
     const std::shared_ptr<const Utilities::MPI::Partitioner> &vector_partitioner,
-    const LinearAlgebra::distributed::Vector<double>         &lumped_mass)
+    const LinearAlgebra::distributed::Vector<double>         &point_mass)
   {
     partitioner = vector_partitioner;
     node_dof.clear();
@@ -216,11 +216,12 @@ namespace WheelRail
     AssertThrow(!passes[0].faces.empty(),
                 ExcMessage("Contact/Master boundary " + std::to_string(prm.master_boundary) +
                            " has no faces in this geometry."));
-    // nodal masses of the slaves (for contact damping), replicated
+    // the slaves' point masses (contact damping), replicated; a hanging
+    // slave's comes from its masters, so that it is damped like the others
     std::vector<double> owned_mass(node_dof.size(), 0.), mass(node_dof.size(), 0.);
     for (unsigned int n = 0; n < node_dof.size(); ++n)
       if (partitioner->in_local_range(node_dof[n]))
-        owned_mass[n] = lumped_mass.local_element(partitioner->global_to_local(node_dof[n]));
+        owned_mass[n] = point_mass.local_element(partitioner->global_to_local(node_dof[n]));
     Utilities::MPI::sum(owned_mass, mpi_communicator, mass);
     for (Pass &pass : passes)
       for (unsigned int s = 0; s < pass.slaves.size(); ++s)

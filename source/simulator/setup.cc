@@ -115,7 +115,7 @@ namespace WheelRail
         contact = std::make_unique<PenaltyContact>(parameters.contact,
                                                    parameters.material,
                                                    mpi_communicator);
-        contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->lumped_mass());
+        contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->point_mass());
         solver->attach_contact(contact.get());
       }
     if (parameters.problem.geometry == "wheel and rail" &&

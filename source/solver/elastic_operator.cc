@@ -139,6 +139,25 @@ namespace WheelRail
   }
 
 
+  VectorType
+  ElasticOperator::point_mass() const
+  {
+    VectorType m = mass;
+    m.update_ghost_values();
+    for (unsigned int c = 0; c < constrained_dofs.size(); ++c)
+      {
+        double mobility = 0;
+        for (unsigned int k = constraint_offsets[c]; k < constraint_offsets[c + 1]; ++k)
+          if (m.local_element(constraint_masters[k]) > 0)
+            mobility += constraint_weights[k] * constraint_weights[k] /
+                        m.local_element(constraint_masters[k]);
+        m.local_element(constrained_dofs[c]) = mobility > 0 ? 1. / mobility : 0.;
+      }
+    return m;
+  }
+
+
+
   void
   ElasticOperator::setup_lumped_mass()
   {

@@ -66,7 +66,7 @@ namespace WheelRail
     int                   face = -1;
     double                xi = 0, eta = 0;
     FrictionModel::Memory friction;   ///< tangential spring and friction state
-    double                mass = 0;   ///< lumped nodal mass (contact damping) [kg]
+    double                mass = 0;   ///< point mass (contact damping) [kg]
     Point<dim>            x_previous; ///< position at the previous step
     double                gap_previous = 0;
     /** Energy dissipated at this node in the last step by friction and by
@@ -192,11 +192,15 @@ namespace WheelRail
                    const MaterialParameters &material,
                    MPI_Comm                  comm);
 
-    /** Collect slave nodes and master faces of the mesh. */
+    /**
+     * Collect slave nodes and master faces of the mesh. @p point_mass: per
+     * DoF the mass a force at the node accelerates (a hanging node's through
+     * its masters), for the contact damping.
+     */
     void
     setup(const DoFHandler<dim>                                    &dof_handler,
           const std::shared_ptr<const Utilities::MPI::Partitioner> &partitioner,
-          const LinearAlgebra::distributed::Vector<double>         &lumped_mass);
+          const LinearAlgebra::distributed::Vector<double>         &point_mass);
 
     /**
      * Add the contact forces for the displacement @p u (ghosted) to the

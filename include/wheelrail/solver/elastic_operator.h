@@ -160,6 +160,15 @@ namespace WheelRail
     {
       return mass;
     }
+    /**
+     * The mass that a force applied at a node accelerates, per DoF: the
+     * lumped mass, and on a hanging DoF with masters j and weights w_j
+     * 1 / sum_j (w_j^2 / m_j) (its acceleration under a point force f is
+     * sum_j w_j (w_j f) / m_j). Ghosted. The contact's damping and the
+     * stability of its springs take it.
+     */
+    VectorType
+    point_mass() const;
     const AffineConstraints<double> &
     get_hanging_constraints() const
     {
