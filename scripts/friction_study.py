@@ -6,9 +6,15 @@ case with the exponential law (eq. 1) at several h, dt and friction options
 and reports for each run:
 
   F_N, mu_a      F_N and F_x / F_N of the patch at instant t; mu_a's spread
-                 (max - min) / mean over the statistics rows of the last 20 mm
-                 before O; the rigid creepage (mean over those rows, and its
-                 change over them: a run-away slip shows there)
+                 (max - min) / mean over the statistics rows of the in-zone
+                 stretch: the wheel positions up to O at which the whole patch
+                 (its half-length at t) lies in the rail's solution zone (the
+                 last 20 mm before O where the mesh has no zone); the rigid
+                 creepage (mean over those rows, and its change over them: a
+                 run-away slip shows there). A patch that crosses into the
+                 zone passes a change of mesh size, whose transient (the
+                 trailing s_n dips by up to half for a few mm) grows with the
+                 zone's refinement and is not part of the solution's h-dependence
   slip area      area fractions of the rail nodes in contact flagged slipping
                  by eq. 5 (force criterion) and eq. 6 (s_n > 0.05 m/s) at t
                  (decided on the slave nodes), the eq. 6 share of the leading
@@ -104,6 +110,16 @@ def probe_analysis(run, names, stats, length):
     return out
 
 
+def in_zone_start(run, x_contact):
+    """The first wheel position of the in-zone stretch: the patch's trailing edge
+    (half its node extent at t behind the wheel) at the solution zone's start
+    (the zone is centred at O); -20 mm where the mesh has no zone."""
+    zone = float(hc.read_parameters(run).get("Geometry/Mesh/Solution zone length", 0) or 0)
+    if zone <= 0 or x_contact.size == 0:
+        return -0.020
+    return -0.5 * zone + 0.5 * (x_contact.max() - x_contact.min())
+
+
 def analyse(run, grid, length):
     r = hc.compare_patch(run, "t", grid)
     if r["note"]:
@@ -115,13 +131,14 @@ def analyse(run, grid, length):
     eq6 = np.sum(P["area"][inc & (P["slip_eq6"] > 0)]) / np.sum(P["area"][inc])
     names, S = hc.read_statistics(run)
     wheel_x = hc.column(names, S, "wheel x")
-    last = (wheel_x >= -0.020) & (wheel_x <= 0.)
+    start = in_zone_start(run, P["x"][inc])
+    last = (wheel_x >= start) & (wheel_x <= 0.)
     mu = hc.column(names, S, "mu_a")[last]
     creep_hist = hc.column(names, S, "creepage")[last]
     t_hist = hc.column(names, S, "time")[last]
     trail_hist = hc.column(names, S, "trailing micro-slip")[last]
     slip_hist = hc.column(names, S, "slip nodes")[last] / hc.column(names, S, "contact nodes")[last]
-    out = dict(Fn=r["Fn"], mu=r["Fx"] / r["Fn"], spread=(mu.max() - mu.min()) / abs(mu.mean()),
+    out = dict(start=start, Fn=r["Fn"], mu=r["Fx"] / r["Fn"], spread=(mu.max() - mu.min()) / abs(mu.mean()),
                creep=creep_hist.mean(), creep_drift=creep_hist[-1] - creep_hist[0],
                creep_hs=r["creep_hs"],
                eq5=r["slip_fe"], eq6=eq6, lead_eq6=s["lead_eq6"],
@@ -163,17 +180,17 @@ CHECKS = {
 
 
 def tables(results):
-    head = ("| run | F_N [kN] | mu_a at t | spread, last 20 mm | creepage [1e-3]: mean, change over the "
-            "last 20 mm (HS at F_x) | "
+    head = ("| run | F_N [kN] | mu_a at t | in-zone stretch [mm]: from, spread | creepage [1e-3]: mean, change over the "
+            "stretch (HS at F_x) | "
             "slip area eq. 5 / eq. 6 / half-space | window mean eq. 5 / eq. 6 | eq. 6 slip, leading half | "
             "s_n trailing FE at t, window mean / HS [m/s] | RMS q_x / (f_S p0) at t, window mean | "
-            "last 20 mm means: slip nodes / contact nodes, trailing s_n [m/s] |")
+            "stretch means: slip nodes / contact nodes, trailing s_n [m/s] |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for label, r in results:
         def opt(key, fmt, scale=1.0):
             return fmt % (scale * r[key]) if key in r else "-"
         lines.append(
-            f"| {label} | {r['Fn'] / 1e3:.2f} | {r['mu']:.4f} | {100 * r['spread']:.1f} % | "
+            f"| {label} | {r['Fn'] / 1e3:.2f} | {r['mu']:.4f} | {r['start'] * 1e3:.1f}, {100 * r['spread']:.1f} % | "
             f"{r['creep'] * 1e3:.3f}, {r['creep_drift'] * 1e3:+.3f} ({r['creep_hs'] * 1e3:.3f}) | {r['eq5']:.3f} / {r['eq6']:.3f} / "
             f"{r['slip_hs']:.3f} | {opt('eq5_mean', '%.3f')} / {opt('eq6_mean', '%.3f')} | "
             f"{r['lead_eq6']:.2f} | {r['trail_s']:.3f}, {opt('trail_s_mean', '%.3f')} / "
@@ -182,7 +199,7 @@ def tables(results):
     head = ("| run | " + " | ".join(f"v_{c} {n}" + (" [m/s]" if c == "x" and n == "30-60 kHz" else "")
                                    for c in "xy" for n in BANDS) + " | "
             "strongest above 100 kHz, x / y [kHz] | at 175 kHz sampling: v_x 30-60 kHz [m/s], "
-            "strongest x / y [kHz] | 30-60 kHz RMS over the last 20 mm: slip-node fraction, "
+            "strongest x / y [kHz] | 30-60 kHz RMS over the in-zone stretch: slip-node fraction, "
             "trailing s_n [m/s] |")
     spectra = [head, "|" + "---|" * (head.count("|") - 1)]
     for label, r in results:
