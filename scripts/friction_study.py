@@ -110,11 +110,12 @@ def probe_analysis(run, names, stats, length):
     return out
 
 
-def in_zone_start(run, x_contact):
+def in_zone_start(parameters, x_contact):
     """The first wheel position of the in-zone stretch: the patch's trailing edge
     (half its node extent at t behind the wheel) at the solution zone's start
-    (the zone is centred at O); -20 mm where the mesh has no zone."""
-    zone = float(hc.read_parameters(run).get("Geometry/Mesh/Solution zone length", 0) or 0)
+    (the zone is centred at O); -20 mm where the mesh has no zone. @p parameters:
+    the run's hc.read_parameters()."""
+    zone = float(parameters.get("Geometry/Mesh/Solution zone length", 0) or 0)
     if zone <= 0 or x_contact.size == 0:
         return -0.020
     return -0.5 * zone + 0.5 * (x_contact.max() - x_contact.min())
@@ -125,13 +126,14 @@ def analyse(run, grid, length):
     if r["note"]:
         print(f"{run}: {r['note']}")
     s = hc.slip_halves(run, r)
-    _, f_s, _ = hc.law_of(hc.read_parameters(run))
+    parameters = hc.read_parameters(run)
+    _, f_s, _ = hc.law_of(parameters)
     P = hc.read_patch(run, "t")
     inc = P["in_contact"] > 0
     eq6 = np.sum(P["area"][inc & (P["slip_eq6"] > 0)]) / np.sum(P["area"][inc])
     names, S = hc.read_statistics(run)
     wheel_x = hc.column(names, S, "wheel x")
-    start = in_zone_start(run, P["x"][inc])
+    start = in_zone_start(parameters, P["x"][inc])
     last = (wheel_x >= start) & (wheel_x <= 0.)
     mu = hc.column(names, S, "mu_a")[last]
     creep_hist = hc.column(names, S, "creepage")[last]
