@@ -19,6 +19,8 @@ and reports for each run:
                  by eq. 5 (force criterion) and eq. 6 (s_n > 0.05 m/s) at t
                  (decided on the slave nodes), the eq. 6 share of the leading
                  half, and the time means over the patch window (patch_t_mean.csv)
+  series         eq. 5 and eq. 6 slip-area fractions of the rail top, means over
+                 the frames of patch_series.h5 in the in-zone stretch
   s_n trailing   mean micro-slip of the trailing half of the contact along
                  y = 0 at t
   half-space     Kalker's steady rolling solution with the same law (its
@@ -121,6 +123,31 @@ def in_zone_start(parameters, x_contact):
     return -0.5 * zone + 0.5 * (x_contact.max() - x_contact.min())
 
 
+def series_slip(run, names, S, start):
+    """Slip-area fractions of the rail top by eq. 5 (the return map's state) and
+    eq. 6 (s_n > 0.05 m/s), means over the frames of patch_series.h5 whose wheel
+    position lies in the in-zone stretch [start, 0]: the stretch's time means
+    that one instant or one window at t cannot give. None without the file or
+    without frames in the stretch."""
+    path = os.path.join(run, "patch_series.h5")
+    if not os.path.exists(path):
+        return None
+    import h5py
+    with h5py.File(path, "r") as f:
+        x_w = np.interp(f["time"][:], hc.column(names, S, "time"), hc.column(names, S, "wheel x"))
+        frames = np.flatnonzero((x_w >= start) & (x_w <= 0.))
+        if frames.size == 0:
+            return None
+        area = f["mesh/area"][:]
+        contact = f["fields/pressure_Pa"][frames] > 0
+        slipping = f["fields/state_0free_1adhesion_2slip"][frames] == 2
+        fast = f["fields/slip_velocity_m_s"][frames] > 0.05
+    a = np.maximum((contact * area).sum(axis=1), 1e-300)
+    return dict(frames=frames.size,
+                eq5=np.mean((slipping * contact * area).sum(axis=1) / a),
+                eq6=np.mean((fast * contact * area).sum(axis=1) / a))
+
+
 def analyse(run, grid, length):
     r = hc.compare_patch(run, "t", grid)
     if r["note"]:
@@ -149,6 +176,9 @@ def analyse(run, grid, length):
                trail_hist=trail_hist.mean(), slip_hist=slip_hist.mean(),
                trail_band=band_rms(t_hist, trail_hist, [BANDS["30-60 kHz"]])[0],
                slip_band=band_rms(t_hist, slip_hist, [BANDS["30-60 kHz"]])[0])
+    series = series_slip(run, names, S, start)
+    if series is not None:
+        out["series_eq5"], out["series_eq6"] = series["eq5"], series["eq6"]
     M = hc.read_patch(run, "t_mean")
     if M is not None:
         w = M["contact"] * M["area"]
@@ -186,7 +216,8 @@ def tables(results):
             "stretch (HS at F_x) | "
             "slip area eq. 5 / eq. 6 / half-space | window mean eq. 5 / eq. 6 | eq. 6 slip, leading half | "
             "s_n trailing FE at t, window mean / HS [m/s] | RMS q_x / (f_S p0) at t, window mean | "
-            "stretch means: slip nodes / contact nodes, trailing s_n [m/s] |")
+            "stretch means: slip nodes / contact nodes, trailing s_n [m/s] | "
+            "stretch means of the patch series: slip area eq. 5 / eq. 6 |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for label, r in results:
         def opt(key, fmt, scale=1.0):
@@ -197,7 +228,8 @@ def tables(results):
             f"{r['slip_hs']:.3f} | {opt('eq5_mean', '%.3f')} / {opt('eq6_mean', '%.3f')} | "
             f"{r['lead_eq6']:.2f} | {r['trail_s']:.3f}, {opt('trail_s_mean', '%.3f')} / "
             f"{r['hs_trail_s']:.3f} | {100 * r['rms_q']:.1f} %, {opt('rms_q_mean', '%.1f %%', 100)} | "
-            f"{r['slip_hist']:.3f}, {r['trail_hist']:.3f} |")
+            f"{r['slip_hist']:.3f}, {r['trail_hist']:.3f} | "
+            f"{opt('series_eq5', '%.3f')} / {opt('series_eq6', '%.3f')} |")
     head = ("| run | " + " | ".join(f"v_{c} {n}" + (" [m/s]" if c == "x" and n == "30-60 kHz" else "")
                                    for c in "xy" for n in BANDS) + " | "
             "strongest above 100 kHz, x / y [kHz] | at 175 kHz sampling: v_x 30-60 kHz [m/s], "
