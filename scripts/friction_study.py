@@ -124,11 +124,12 @@ def in_zone_start(parameters, x_contact):
 
 
 def series_slip(run, names, S, start):
-    """Slip-area fractions of the rail top by eq. 5 (the return map's state) and
-    eq. 6 (s_n > 0.05 m/s), means over the frames of patch_series.h5 whose wheel
-    position lies in the in-zone stretch [start, 0]: the stretch's time means
-    that one instant or one window at t cannot give. None without the file or
-    without frames in the stretch."""
+    """Slip-area fractions of the rail top by eq. 5 (the series' state field: the
+    force criterion) and eq. 6 (the node's s_n, the mean of its slave states, over
+    0.05 m/s), area-weighted over the nodes with pressure, means over the frames
+    of patch_series.h5 whose wheel position lies in the in-zone stretch
+    [start, 0]: the stretch's time means that one instant or one window at t
+    cannot give. None without the file or without frames in the stretch."""
     path = os.path.join(run, "patch_series.h5")
     if not os.path.exists(path):
         return None
