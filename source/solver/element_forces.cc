@@ -69,6 +69,8 @@ namespace WheelRail
           prefetch_block(batch_blocks + std::size_t(batch + prefetch_distance) * block_size,
                          block_size);
         const unsigned int family = batch_family[batch];
+        if (batch + node_prefetch_distance < n_batches)
+          prefetch_family(batch_family[batch + node_prefetch_distance], U, V, F, with_damping);
         if (family != numbers::invalid_unsigned_int)
           {
             // the 27 grid nodes once, then each vertex's vector over the
@@ -115,22 +117,10 @@ namespace WheelRail
           {
             // each grid node's sum in a register, its terms in the order
             // of the general scatter below (ascending vertex): the same bits
-            const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
-            for (unsigned int n = 0; n < 27; ++n)
-              {
-                const unsigned int idx = grid[n];
-                double             f0 = F[idx], f1 = F[idx + 1], f2 = F[idx + 2];
-                for (unsigned int e = family_scatter.start[n]; e < family_scatter.start[n + 1]; ++e)
-                  {
-                    const double *fe = &fb[family_scatter.entry[e]];
-                    f0 += fe[0];
-                    f1 += fe[W];
-                    f2 += fe[2 * W];
-                  }
-                F[idx]     = f0;
-                F[idx + 1] = f1;
-                F[idx + 2] = f2;
-              }
+            scatter_family(F,
+                           &family_nodes[std::size_t(family) * 27],
+                           fb,
+                           std::make_integer_sequence<unsigned int, 27>{});
             continue;
           }
         const unsigned int n_valid = std::min(W, n_cells - batch * W);
@@ -152,12 +142,34 @@ namespace WheelRail
     // The kernel reads a batch's 39 fields (2.5 kB) in its own order, not as
     // one stream, which the hardware prefetcher does not follow. Requested a
     // few batches ahead they arrive while the current batch computes; the
-    // arithmetic is untouched, so are the results. The gathered nodal values
-    // are not prefetched: they mostly hit the cache already (requesting a
-    // family's 27 nodes of u, v, f as well made the loop 15 % slower).
+    // arithmetic is untouched, so are the results.
     const char *data = reinterpret_cast<const char *>(block);
     for (unsigned int offset = 0; offset < size * sizeof(double); offset += 64)
       __builtin_prefetch(data + offset, 0, 0);
+  }
+
+
+  void
+  ElasticOperator::prefetch_family(const unsigned int family,
+                                   const double      *U,
+                                   const double      *V,
+                                   const double      *F,
+                                   const bool         with_damping) const
+  {
+    // The 27 grid nodes of a family lie far apart in the DoF numbering, and
+    // their u, v, f come from beyond the L2 cache: the gathers of the loop
+    // waited on them (perf). Requested node_prefetch_distance batches ahead
+    // (one line per node and vector; f for writing) they are there in time.
+    if (family == numbers::invalid_unsigned_int)
+      return;
+    const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+    for (unsigned int n = 0; n < 27; ++n)
+      {
+        __builtin_prefetch(U + grid[n], 0, 3);
+        if (with_damping)
+          __builtin_prefetch(V + grid[n], 0, 3);
+        __builtin_prefetch(F + grid[n], 1, 3);
+      }
   }
 
 

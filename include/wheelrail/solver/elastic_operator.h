@@ -285,6 +285,17 @@ namespace WheelRail
      *  (bench of 2026-11-25, doc/performance.md: 4 or 6 batches are within
      *  the noise of 2, none requested is 60 % slower). */
     static constexpr unsigned int prefetch_distance = 2;
+    /** Request u, v (with damping) and f of the 27 grid nodes of @p family
+     *  (none if it is numbers::invalid_unsigned_int) into the cache. */
+    void
+    prefetch_family(const unsigned int family,
+                    const double      *U,
+                    const double      *V,
+                    const double      *F,
+                    const bool         with_damping) const;
+    /** Batches ahead of the one computed whose nodal values
+     *  prefetch_family() requests (doc/performance.md, 2026-11-26). */
+    static constexpr unsigned int node_prefetch_distance = 4;
 
     FESystem<dim>             fe;
     DoFHandler<dim>           dof_handler;

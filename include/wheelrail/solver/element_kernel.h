@@ -14,6 +14,7 @@
 #define wheelrail_solver_element_kernel_h
 
 #include <cstddef>
+#include <utility>
 
 #define WHEELRAIL_ALWAYS_INLINE inline __attribute__((always_inline))
 
@@ -203,12 +204,13 @@ namespace WheelRail
 
     /** Per grid node, the (vertex, lane) pairs that reach it as offsets
      *  a * 3 W + l into a [vertex][component][lane] array, by ascending a:
-     *  the order in which the general scatter adds them. */
+     *  the order in which the general scatter adds them. A compile-time
+     *  table, so that the family scatter unrolls into straight-line code. */
     struct FamilyScatter
     {
       unsigned char start[28];
       unsigned char entry[64];
-      FamilyScatter()
+      constexpr FamilyScatter()
         : start{}
         , entry{}
       {
@@ -219,7 +221,7 @@ namespace WheelRail
         start[0] = 0;
         for (unsigned int n = 0; n < 27; ++n)
           start[n + 1] = start[n] + count[n];
-        unsigned int next[27];
+        unsigned int next[27] = {};
         for (unsigned int n = 0; n < 27; ++n)
           next[n] = start[n];
         for (unsigned int a = 0; a < 8; ++a)
@@ -227,7 +229,45 @@ namespace WheelRail
             entry[next[family_offset[a] + family_offset[l]]++] = a * 3 * W + l;
       }
     };
-    inline const FamilyScatter family_scatter;
+    inline constexpr FamilyScatter family_scatter{};
+
+    /** Adds to the three components of grid node @p n at F + @p idx its
+     *  terms of the batch forces @p fb, in the table's order. */
+    template <unsigned int n, unsigned int... k>
+    WHEELRAIL_ALWAYS_INLINE void
+    scatter_grid_node(double            *F,
+                      const unsigned int idx,
+                      const double *__restrict fb,
+                      std::integer_sequence<unsigned int, k...>)
+    {
+      double f0 = F[idx], f1 = F[idx + 1], f2 = F[idx + 2];
+      ((f0 += fb[family_scatter.entry[family_scatter.start[n] + k]],
+        f1 += fb[family_scatter.entry[family_scatter.start[n] + k] + W],
+        f2 += fb[family_scatter.entry[family_scatter.start[n] + k] + 2 * W]),
+       ...);
+      F[idx]     = f0;
+      F[idx + 1] = f1;
+      F[idx + 2] = f2;
+    }
+
+    /** The family scatter: each of the 27 grid nodes of @p grid gets its
+     *  terms of @p fb added in ascending vertex order (the order of the
+     *  general scatter: the same bits), unrolled at compile time. */
+    template <unsigned int... n>
+    WHEELRAIL_ALWAYS_INLINE void
+    scatter_family(double             *F,
+                   const unsigned int *grid,
+                   const double *__restrict fb,
+                   std::integer_sequence<unsigned int, n...>)
+    {
+      (scatter_grid_node<n>(
+         F,
+         grid[n],
+         fb,
+         std::make_integer_sequence<unsigned int,
+                                    family_scatter.start[n + 1] - family_scatter.start[n]>{}),
+       ...);
+    }
 
     /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
      *  of a batch: H from the displacements, L from the velocities. */
