@@ -86,7 +86,8 @@ namespace WheelRail
           << solver->get_dof_handler().n_dofs() << " DoFs:" << std::endl
           << "  wall " << fmt(wall, 4) << " s, " << fmt(ns, 4) << " ns per element-step (wall), "
           << fmt(ns * n_ranks, 4) << " ns per element-step per rank" << std::endl
-          << "  cells in family batches (8 children of one parent: 27 nodes gathered "
+          << "  cells in family batches (8 cells arranged as the children of one "
+             "parent: 27 nodes gathered "
              "and scattered, not 64): "
           << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl
           << "  split (slowest rank, s):";

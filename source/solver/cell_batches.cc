@@ -124,8 +124,9 @@ namespace WheelRail
     // Cell order: first the families, the 8 children of a parent that are
     // all active and locally owned, in child order and in the order of
     // their first child, so that each fills one batch (see family_offset:
-    // 27 nodes to gather and scatter instead of 64); then the other cells
-    // in the triangulation's order.
+    // 27 nodes to gather and scatter instead of 64); then blocks of other
+    // cells arranged the same way; then the remaining cells in the
+    // triangulation's order.
     std::vector<DoFHandler<dim>::active_cell_iterator> cells;
     cells.reserve(n_cells);
     std::vector<bool> taken(triangulation.n_active_cells(), false);
@@ -145,9 +146,59 @@ namespace WheelRail
                 taken[parent->child(i)->active_cell_index()] = true;
               }
         }
+    std::vector<DoFHandler<dim>::active_cell_iterator> rest;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && !taken[cell->active_cell_index()])
-        cells.push_back(cell);
+        rest.push_back(cell);
+
+    // Then, of the other cells, blocks of 2 x 2 x 2 arranged as a parent's
+    // children are (the cells of an unrefined structured mesh, the coarse
+    // cells of a refined one): cell l of a block has the block's centre as
+    // its vertex 7 - l. slot[8 v + k] is the cell of the rest whose vertex k
+    // is v (conflict where two are). A block is taken only if its 64
+    // (vertex, cell) pairs map onto the 3 x 3 x 3 grid as a family's do, in
+    // the order of its first cell; find_families() checks the batches again.
+    constexpr unsigned int    none = numbers::invalid_unsigned_int, conflict = none - 1;
+    std::vector<unsigned int> slot(std::size_t(triangulation.n_vertices()) * 8, none);
+    for (unsigned int i = 0; i < rest.size(); ++i)
+      for (unsigned int k = 0; k < 8; ++k)
+        {
+          unsigned int &s = slot[std::size_t(rest[i]->vertex_index(k)) * 8 + k];
+          s               = (s == none) ? i : conflict;
+        }
+    std::vector<bool> used(rest.size(), false);
+    for (unsigned int i = 0; i < rest.size(); ++i)
+      {
+        if (used[i])
+          continue;
+        const std::size_t centre = rest[i]->vertex_index(7);
+        unsigned int      member[8];
+        bool              block = true;
+        for (unsigned int l = 0; l < 8 && block; ++l)
+          {
+            member[l] = slot[centre * 8 + 7 - l];
+            block     = member[l] < conflict && !used[member[l]];
+          }
+        unsigned int grid[27];
+        std::fill(std::begin(grid), std::end(grid), none);
+        for (unsigned int a = 0; a < 8 && block; ++a)
+          for (unsigned int l = 0; l < 8 && block; ++l)
+            {
+              const unsigned int v = rest[member[l]]->vertex_index(a);
+              unsigned int      &g = grid[family_offset[a] + family_offset[l]];
+              block                = (g == none || g == v);
+              g                    = v;
+            }
+        if (block)
+          for (unsigned int l = 0; l < 8; ++l)
+            {
+              cells.push_back(rest[member[l]]);
+              used[member[l]] = true;
+            }
+      }
+    for (unsigned int i = 0; i < rest.size(); ++i)
+      if (!used[i])
+        cells.push_back(rest[i]);
     AssertThrow(cells.size() == n_cells, ExcInternalError());
     return cells;
   }
