@@ -151,10 +151,10 @@ namespace WheelRail
       if (cell->is_locally_owned() && !taken[cell->active_cell_index()])
         rest.push_back(cell);
 
-    // Then, of the other cells, blocks of 2 x 2 x 2 arranged as a parent's
-    // children are (the cells of an unrefined structured mesh, the coarse
-    // cells of a refined one): cell l of a block has the block's centre as
-    // its vertex 7 - l. slot[8 v + k] is the cell of the rest whose vertex k
+    // Then blocks of 2 x 2 x 2 of the other cells that are arranged as a
+    // parent's children (an unrefined structured mesh, the coarse cells of
+    // a refined one): cell l of a block has the block's centre as its
+    // vertex 7 - l. slot[8 v + k] is the cell of the rest whose vertex k
     // is v (conflict where two are). A block is taken only if its 64
     // (vertex, cell) pairs map onto the 3 x 3 x 3 grid as a family's do, in
     // the order of its first cell; find_families() checks the batches again.
