@@ -70,6 +70,32 @@ namespace WheelRail
       local.max_aspect_ratio = std::max(local.max_aspect_ratio, emax / emin);
       return Le;
     }
+
+
+
+    /**
+     * Whether the nodes node_of(a, l) of vertex a of cell (lane) l, a and l
+     * in 0..7, are those of a family: one 3 x 3 x 3 grid with vertex a of
+     * lane l at grid node family_offset[a] + family_offset[l]. The grid
+     * into @p grid.
+     */
+    template <typename NodeOf>
+    bool
+    is_family(const NodeOf &node_of, unsigned int (&grid)[27])
+    {
+      std::fill(std::begin(grid), std::end(grid), numbers::invalid_unsigned_int);
+      for (unsigned int a = 0; a < 8; ++a)
+        for (unsigned int l = 0; l < W; ++l)
+          {
+            const unsigned int node = node_of(a, l);
+            unsigned int      &g    = grid[family_offset[a] + family_offset[l]];
+            if (g == numbers::invalid_unsigned_int)
+              g = node;
+            else if (g != node)
+              return false;
+          }
+      return true;
+    }
   } // namespace
 
 
@@ -180,16 +206,10 @@ namespace WheelRail
             block     = member[l] < conflict && !used[member[l]];
           }
         unsigned int grid[27];
-        std::fill(std::begin(grid), std::end(grid), none);
-        for (unsigned int a = 0; a < 8 && block; ++a)
-          for (unsigned int l = 0; l < 8 && block; ++l)
-            {
-              const unsigned int v = rest[member[l]]->vertex_index(a);
-              unsigned int      &g = grid[family_offset[a] + family_offset[l]];
-              block                = (g == none || g == v);
-              g                    = v;
-            }
-        if (block)
+        if (block &&
+            is_family([&](const unsigned int a,
+                          const unsigned int l) { return rest[member[l]]->vertex_index(a); },
+                      grid))
           for (unsigned int l = 0; l < 8; ++l)
             {
               cells.push_back(rest[member[l]]);
@@ -355,19 +375,11 @@ namespace WheelRail
         if (n_cells - b * W < W)
           continue;
         unsigned int grid[27];
-        std::fill(std::begin(grid), std::end(grid), numbers::invalid_unsigned_int);
-        bool family = true;
-        for (unsigned int a = 0; a < 8 && family; ++a)
-          for (unsigned int l = 0; l < W && family; ++l)
-            {
-              const unsigned int idx = batch_nodes[(std::size_t(b) * 8 + a) * W + l];
-              unsigned int      &g   = grid[family_offset[a] + family_offset[l]];
-              if (g == numbers::invalid_unsigned_int)
-                g = idx;
-              else
-                family = (g == idx);
-            }
-        if (family)
+        if (is_family(
+              [&](const unsigned int a, const unsigned int l) {
+                return batch_nodes[(std::size_t(b) * 8 + a) * W + l];
+              },
+              grid))
           {
             batch_family[b] = family_nodes.size() / 27;
             family_nodes.insert(family_nodes.end(), std::begin(grid), std::end(grid));
