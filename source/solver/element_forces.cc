@@ -55,64 +55,94 @@ namespace WheelRail
                                 double            *F,
                                 const bool         with_damping) const
   {
+    // Software pipelined by one batch: the nodal values of batch + 1 are
+    // gathered (scalar stores) before the kernel of batch runs, so that
+    // the kernel's vector loads of them come after the stores have left
+    // the store buffer (a vector load over recent scalar stores cannot be
+    // forwarded and waits for them).
     alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
+    alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
     std::fill(std::begin(vb), std::end(vb), 0.);
+    for (auto &slot : v_gathered)
+      std::fill(std::begin(slot), std::end(slot), 0.);
     // a family's grid values per component, padded: the permutations read
     // 16 values from any vertex's offset (at most 13 + 15 = 28)
-    alignas(64) double ug[3][32] = {}, vg[3][32] = {};
-    double             power = 0;
+    alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
+    const auto         gather = [&](const unsigned int batch, const unsigned int slot) {
+      const unsigned int family = batch_family[batch];
+      if (family != numbers::invalid_unsigned_int)
+        {
+          // the 27 grid nodes once
+          const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+          for (unsigned int n = 0; n < 27; ++n)
+            {
+              const unsigned int idx = grid[n];
+              for (unsigned int d = 0; d < 3; ++d)
+                ug[slot][d][n] = U[idx + d];
+              if (with_damping)
+                for (unsigned int d = 0; d < 3; ++d)
+                  vg[slot][d][n] = V[idx + d];
+            }
+        }
+      else
+        {
+          const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+          for (unsigned int a = 0; a < 8; ++a)
+            for (unsigned int l = 0; l < W; ++l)
+              {
+                const unsigned int idx = nodes[a * W + l];
+                for (unsigned int d = 0; d < 3; ++d)
+                  u_gathered[slot][(a * 3 + d) * W + l] = U[idx + d];
+                if (with_damping)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    v_gathered[slot][(a * 3 + d) * W + l] = V[idx + d];
+              }
+        }
+    };
+    double power = 0;
+    if (n_batches > 0)
+      gather(0, 0);
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
         const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
         const Data          data{batch_blocks + std::size_t(batch) * block_size};
+        const unsigned int  slot = batch & 1;
         if (batch + prefetch_distance < n_batches)
           prefetch_block(batch_blocks + std::size_t(batch + prefetch_distance) * block_size,
                          block_size);
         const unsigned int family = batch_family[batch];
         if (batch + node_prefetch_distance < n_batches)
           prefetch_family(batch_family[batch + node_prefetch_distance], U, V, F, with_damping);
+        if (batch + 1 < n_batches)
+          gather(batch + 1, slot ^ 1);
+        const double *u_batch = ub, *v_batch = vb;
         if (family != numbers::invalid_unsigned_int)
           {
-            // the 27 grid nodes once, then each vertex's vector over the
-            // children by one two-source permutation of the grid values
-            const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
-            for (unsigned int n = 0; n < 27; ++n)
-              {
-                const unsigned int idx = grid[n];
-                for (unsigned int d = 0; d < 3; ++d)
-                  ug[d][n] = U[idx + d];
-                if (with_damping)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    vg[d][n] = V[idx + d];
-              }
+            // each vertex's vector over the children by one two-source
+            // permutation of the grid values
             for (unsigned int a = 0; a < 8; ++a)
               for (unsigned int d = 0; d < 3; ++d)
                 {
                   const unsigned int o = family_offset[a];
                   store(&ub[(a * 3 + d) * W],
-                        __builtin_shuffle(ElementKernel::load(&ug[d][o]),
-                                          ElementKernel::load(&ug[d][o + W]),
+                        __builtin_shuffle(ElementKernel::load(&ug[slot][d][o]),
+                                          ElementKernel::load(&ug[slot][d][o + W]),
                                           family_lanes));
                   if (with_damping)
                     store(&vb[(a * 3 + d) * W],
-                          __builtin_shuffle(ElementKernel::load(&vg[d][o]),
-                                            ElementKernel::load(&vg[d][o + W]),
+                          __builtin_shuffle(ElementKernel::load(&vg[slot][d][o]),
+                                            ElementKernel::load(&vg[slot][d][o + W]),
                                             family_lanes));
                 }
           }
         else
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int l = 0; l < W; ++l)
-              {
-                const unsigned int idx = nodes[a * W + l];
-                for (unsigned int d = 0; d < 3; ++d)
-                  ub[(a * 3 + d) * W + l] = U[idx + d];
-                if (with_damping)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    vb[(a * 3 + d) * W + l] = V[idx + d];
-              }
-        power += with_damping ? batch_forces<true>(data, lame_lambda, lame_mu, ub, vb, fb) :
-                                batch_forces<false>(data, lame_lambda, lame_mu, ub, vb, fb);
+          {
+            u_batch = u_gathered[slot];
+            v_batch = v_gathered[slot];
+          }
+        power += with_damping ?
+                   batch_forces<true>(data, lame_lambda, lame_mu, u_batch, v_batch, fb) :
+                   batch_forces<false>(data, lame_lambda, lame_mu, u_batch, v_batch, fb);
         if (family != numbers::invalid_unsigned_int)
           {
             // each grid node's sum in a register, its terms in the order
