@@ -252,6 +252,7 @@ namespace WheelRail
     search_time  = 0;
     trigger_nodes.clear();
     step_motion_known = false;
+    resume_valid      = false;
     overlap_checked   = false;
     approach_searches = 0;
     new_contact_depth = 0;
@@ -275,6 +276,7 @@ namespace WheelRail
         if (!need_search && steps_since_search < prm.search_interval)
           ++approach_searches;
         search(u);
+        resume_valid = false;
         timing.search += lap(clock);
       }
     else
@@ -282,6 +284,22 @@ namespace WheelRail
         gather_positions(u, active_gather);
         timing.positions += lap(clock);
       }
+    // the largest motion of a candidate slave or a corner of its faces since
+    // the last evaluation, for compute_slaves() (replicated positions: the
+    // same on every rank)
+    if (active_x_previous.size() == active_nodes.size() && resume_valid)
+      {
+        double largest = 0;
+        for (unsigned int k = 0; k < active_nodes.size(); ++k)
+          largest =
+            std::max(largest, node_x[active_nodes[k]].distance_square(active_x_previous[k]));
+        approach_motion += 2. * std::sqrt(largest);
+      }
+    else
+      resume_valid = false;
+    active_x_previous.resize(active_nodes.size());
+    for (unsigned int k = 0; k < active_nodes.size(); ++k)
+      active_x_previous[k] = node_x[active_nodes[k]];
 
     // rebuild at the next step when a candidate moved too far
     const double limit = prm.rebuild_fraction * prm.search_margin;
@@ -301,6 +319,7 @@ namespace WheelRail
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     for (Pass &pass : passes)
       {
+        select_slaves(pass, advance, advance && resume_valid && !every_slave);
         compute_slaves(pass, dt, advance);
         timing.slaves += lap(clock);
         if (n_ranks > 1)
@@ -308,7 +327,9 @@ namespace WheelRail
             exchange_states(pass, advance);
             timing.exchange += lap(clock);
           }
+        set_resume_motion(pass, advance);
       }
+    resume_valid = advance;
     pairs.clear();
     totals = ContactSummary();
     for (const Pass &pass : passes)
@@ -389,6 +410,7 @@ namespace WheelRail
         plan_approach_trigger();
         // the motion of the last step before the checkpoint is not known here
         step_motion_known = false;
+        resume_valid      = false;
         overlap_checked   = true;
       }
   }

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace WheelRail
 {
@@ -205,7 +206,9 @@ namespace WheelRail
             const Point<dim> &x = node_x[pass.slave_node[s]];
             if (next >= found.size() || found[next] != s)
               {
-                // out of reach: no contact and no friction memory
+                // out of reach: no contact, no friction memory, no gap
+                // (farther than the margin)
+                pass.slaves[s].gap              = std::numeric_limits<double>::infinity();
                 pass.slaves[s].in_contact       = false;
                 pass.slaves[s].normal_force     = 0;
                 pass.slaves[s].tangential_force = Tensor<1, dim>();

@@ -40,13 +40,69 @@ namespace WheelRail
 
 
 
+  // Separated slaves that cannot touch yet. A slave found separated at an
+  // explicit step, with its closest point inside a face at the gap g > 0,
+  // is at least g from the surface of its candidate faces, and at least
+  // (1 - Rebuild fraction) m from every face that is not a candidate
+  // (approach_trigger.cc). The distance of a point from a bilinear face
+  // changes by at most the motion of the point plus the largest motion of
+  // the face's corners, and approach_motion sums twice the largest motion
+  // of an active node over the evaluations since. So while it has grown by
+  // less than half of min(g, (1 - Rebuild fraction) m) the slave is still
+  // more than that away: separated, with the state separate() gave it but
+  // for the gap, which stays as it was found (it is written only by
+  // write_contact_nodes() at the run's last step, where
+  // evaluate_every_slave() has every slave computed). Its position and
+  // previous position are updated as for any slave. The forces, and
+  // everything else, are the same as if it were computed at every step.
+  void
+  PenaltyContact::select_slaves(Pass &pass, const bool advance, const bool skip_separated)
+  {
+    if (pass.resume_motion.size() != pass.slaves.size())
+      pass.resume_motion.assign(pass.slaves.size(), -std::numeric_limits<double>::infinity());
+    pass.evaluated.clear();
+    for (unsigned int c = 0; c < pass.candidate_slaves.size(); ++c)
+      {
+        const unsigned int s = pass.candidate_slaves[c];
+        if (skip_separated && approach_motion < pass.resume_motion[s])
+          {
+            ContactNodeState &state = pass.slaves[s];
+            state.x                 = node_x[pass.slave_node[s]];
+            if (advance)
+              state.x_previous = state.x;
+            continue;
+          }
+        pass.evaluated.push_back(c);
+      }
+    pass.separated_inside.assign(pass.evaluated.size(), 0);
+  }
+
+
+
+  void
+  PenaltyContact::set_resume_motion(Pass &pass, const bool advance)
+  {
+    const double reach = (1. - prm.rebuild_fraction) * prm.search_margin;
+    for (unsigned int k = 0; k < pass.evaluated.size(); ++k)
+      {
+        const unsigned int      s     = pass.candidate_slaves[pass.evaluated[k]];
+        const ContactNodeState &state = pass.slaves[s];
+        pass.resume_motion[s]         = (advance && pass.separated_inside[k] && state.gap > 0) ?
+                                          approach_motion + 0.5 * std::min(state.gap, reach) :
+                                          -std::numeric_limits<double>::infinity();
+      }
+  }
+
+
+
   void
   PenaltyContact::compute_slaves(Pass &pass, const double dt, const bool advance)
   {
     const double margin = prm.search_margin;
-    const auto   own    = own_candidates(pass.candidate_slaves.size());
-    for (unsigned int c = own.first; c < own.second; ++c)
+    const auto   own    = own_candidates(pass.evaluated.size());
+    for (unsigned int e = own.first; e < own.second; ++e)
       {
+        const unsigned int c     = pass.evaluated[e];
         const unsigned int s     = pass.candidate_slaves[c];
         ContactNodeState  &state = pass.slaves[s];
         const Point<dim>  &xs    = node_x[pass.slave_node[s]];
@@ -125,6 +181,7 @@ namespace WheelRail
         if (best_face < 0 || best_gap >= 0)
           {
             separate(state, xs, state.gap, advance);
+            pass.separated_inside[e] = best_face >= 0 && best_out == 0;
             continue;
           }
 
@@ -266,7 +323,7 @@ namespace WheelRail
     // contact travel whole. First the (contact, gap) pairs of all blocks,
     // then the contact states, whose number per rank the pairs tell.
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const unsigned int n       = pass.candidate_slaves.size();
+    const unsigned int n       = pass.evaluated.size();
     const auto         own     = own_candidates(n);
     std::vector<int>  &counts = exchange_counts, &displs = exchange_displs;
     counts.resize(n_ranks);
@@ -279,11 +336,12 @@ namespace WheelRail
       }
     exchange_gaps.resize(2 * n);
     exchange_buffer.clear();
+    // 1: in contact, 2: separated with the closest point inside a face, 0: else
     for (unsigned int c = own.first; c < own.second; ++c)
       {
-        const ContactNodeState &state = pass.slaves[pass.candidate_slaves[c]];
-        exchange_gaps[2 * c]          = state.in_contact ? 1. : 0.;
-        exchange_gaps[2 * c + 1]      = state.gap;
+        const ContactNodeState &state = pass.slaves[pass.candidate_slaves[pass.evaluated[c]]];
+        exchange_gaps[2 * c]     = state.in_contact ? 1. : (pass.separated_inside[c] ? 2. : 0.);
+        exchange_gaps[2 * c + 1] = state.gap;
       }
     int ierr = MPI_Allgatherv(MPI_IN_PLACE,
                               0,
@@ -303,7 +361,7 @@ namespace WheelRail
         const unsigned int first = displs[r] / 2, last = first + counts[r] / 2;
         unsigned int       count = 0;
         for (unsigned int c = first; c < last; ++c)
-          count += exchange_gaps[2 * c] > 0;
+          count += exchange_gaps[2 * c] == 1.;
         counts[r] = count * size;
         displs[r] = total * size;
         total += count;
@@ -313,8 +371,8 @@ namespace WheelRail
                       i = displs[Utilities::MPI::this_mpi_process(mpi_communicator)] / size;
          c < own.second;
          ++c)
-      if (exchange_gaps[2 * c] > 0)
-        exchange_buffer[i++] = pass.slaves[pass.candidate_slaves[c]];
+      if (exchange_gaps[2 * c] == 1.)
+        exchange_buffer[i++] = pass.slaves[pass.candidate_slaves[pass.evaluated[c]]];
     ierr = MPI_Allgatherv(MPI_IN_PLACE,
                           0,
                           MPI_DATATYPE_NULL,
@@ -326,10 +384,11 @@ namespace WheelRail
     AssertThrowMPI(ierr);
     for (unsigned int c = 0, i = 0; c < n; ++c)
       {
-        const bool in_contact = exchange_gaps[2 * c] > 0;
+        const bool in_contact = exchange_gaps[2 * c] == 1.;
         if (c < own.first || c >= own.second)
           {
-            const unsigned int s = pass.candidate_slaves[c];
+            const unsigned int s     = pass.candidate_slaves[pass.evaluated[c]];
+            pass.separated_inside[c] = exchange_gaps[2 * c] == 2.;
             if (in_contact)
               pass.slaves[s] = exchange_buffer[i];
             else

@@ -163,6 +163,8 @@ namespace WheelRail
         const bool report_step = (n % op.report_interval == 0);
         const bool stats_step  = (n % op.statistics_interval == 0) || report_step;
         Energies   e;
+        if (contact)
+          contact->evaluate_every_slave(n + 1 == n_steps); // the gaps of contact_nodes.csv
         solver->step(stats_step ? &e : nullptr);
         clock.step_done(n);
         postprocess({n, n_steps, stats_step ? &e : nullptr, report_step},

@@ -214,6 +214,18 @@ namespace WheelRail
                const bool                                        advance,
                LinearAlgebra::distributed::Vector<double>       &f);
 
+    /**
+     * With @p every, add_forces() computes every candidate slave, also the
+     * separated ones that cannot reach their faces yet and are otherwise
+     * left as they are (compute_slaves()): their gaps are then current, for
+     * the output of the run's last step.
+     */
+    void
+    evaluate_every_slave(const bool every)
+    {
+      every_slave = every;
+    }
+
     /** Active pairs of the last add_forces() (replicated on all ranks). */
     const std::vector<ContactPair> &
     active_pairs() const
@@ -382,6 +394,15 @@ namespace WheelRail
       std::vector<unsigned int>                face_offsets; ///< CSR: slave -> faces
       std::vector<unsigned int>                face_lists;
       std::vector<FaceBound>                   bounds; ///< per face, computed when first needed
+      /** Per slave: the value of approach_motion up to which it stays
+       *  separated (select_slaves()); -infinity: compute it at the next
+       *  evaluation. The same on every rank. */
+      std::vector<double> resume_motion;
+      /** The positions in candidate_slaves computed at this evaluation. */
+      std::vector<unsigned int> evaluated;
+      /** Per entry of evaluated: found separated with its closest point
+       *  inside a face. */
+      std::vector<unsigned char> separated_inside;
     };
     /** A candidate master face at a contact node: what its averaged normal sums. */
     struct NormalEntry
@@ -495,10 +516,21 @@ namespace WheelRail
     {
       return prm.penalty_scale * bulk_modulus * area / reference_length;
     }
+    /** The candidate slaves of @p pass this evaluation computes
+     *  (Pass::evaluated): with @p skip_separated, not those that cannot
+     *  have reached their faces since they were found separated, whose
+     *  state stays (slave_forces.cc). */
+    void
+    select_slaves(Pass &pass, const bool advance, const bool skip_separated);
     /** Closest point, penalty force and friction of this rank's share of
-     *  the candidate slaves of @p pass (a block): their states only. */
+     *  the slaves of @p pass to compute (a block of Pass::evaluated): their
+     *  states only. */
     void
     compute_slaves(Pass &pass, const double dt, const bool advance);
+    /** After the states of all ranks are in: Pass::resume_motion of the
+     *  slaves computed. */
+    void
+    set_resume_motion(Pass &pass, const bool advance);
     /** Every rank computed its share of the candidates: gather all. */
     void
     exchange_states(Pass &pass, const bool advance);
@@ -548,9 +580,17 @@ namespace WheelRail
     };
     std::vector<TriggerNode> trigger_nodes;             ///< ascending local DoFs
     bool                     step_motion_known = false; ///< TriggerNode::dx is of the last step
-    bool                     overlap_checked   = false; ///< check_initial_overlap() done
-    unsigned int             approach_searches = 0;
-    double new_contact_depth = 0; ///< this rank's block, see deepest_new_contact()
+    /** The sum over the evaluations since the last search of twice the
+     *  largest motion of an active node since the evaluation before [m]. */
+    double                  approach_motion = 0;
+    std::vector<Point<dim>> active_x_previous; ///< node_x of active_nodes at the last evaluation
+    /** Pass::resume_motion holds for this rank's blocks (no search, restart
+     *  or static evaluation since they were set). */
+    bool         resume_valid      = false;
+    bool         every_slave       = false; ///< evaluate_every_slave()
+    bool         overlap_checked   = false; ///< check_initial_overlap() done
+    unsigned int approach_searches = 0;
+    double       new_contact_depth = 0; ///< this rank's block, see deepest_new_contact()
 
     std::vector<ContactNodeState> exchange_buffer; ///< exchange_states() workspace
     std::vector<double>           exchange_gaps;   ///< (in contact, gap) per candidate
