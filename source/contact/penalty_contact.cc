@@ -285,7 +285,7 @@ namespace WheelRail
         timing.positions += lap(clock);
       }
     // the largest motion of a candidate slave or a corner of its faces since
-    // the last evaluation, for compute_slaves() (replicated positions: the
+    // the last evaluation, for select_slaves() (replicated positions: the
     // same on every rank)
     if (active_x_previous.size() == active_nodes.size() && resume_valid)
       {

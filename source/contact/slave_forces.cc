@@ -47,14 +47,17 @@ namespace WheelRail
   // (approach_trigger.cc). The distance of a point from a bilinear face
   // changes by at most the motion of the point plus the largest motion of
   // the face's corners, and approach_motion sums twice the largest motion
-  // of an active node over the evaluations since. So while it has grown by
-  // less than half of min(g, (1 - Rebuild fraction) m) the slave is still
-  // more than that away: separated, with the state separate() gave it but
-  // for the gap, which stays as it was found (it is written only by
-  // write_contact_nodes() at the run's last step, where
-  // evaluate_every_slave() has every slave computed). Its position and
-  // previous position are updated as for any slave. The forces, and
-  // everything else, are the same as if it were computed at every step.
+  // of an active node over the evaluations since. While it has grown by
+  // less than half of d = min(g, (1 - Rebuild fraction) m), the slave is
+  // still more than d / 2 from every face, and a face that compute_slaves()
+  // left out for a gap below -margin stays left out (it requires such faces
+  // to be more than d beyond -margin before it marks the slave). So the
+  // slave is separated, with the state separate() gave it but for the gap,
+  // which stays as it was found (only write_contact_nodes() prints it, at
+  // the run's last step, where evaluate_every_slave() has every slave
+  // computed). Its position and previous position are updated as for any
+  // slave. The forces, and everything else, are those of a computation at
+  // every step.
   void
   PenaltyContact::select_slaves(Pass &pass, const bool advance, const bool skip_separated)
   {
@@ -118,6 +121,9 @@ namespace WheelRail
         int            best_face = -1;
         double         best_xi = 0, best_eta = 0, best_gap = 0, best_out = 1e300;
         Tensor<1, dim> best_n;
+        // how far the faces left out for a gap below -margin are from
+        // counting (select_slaves())
+        double ignored_slack = std::numeric_limits<double>::infinity();
         for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
           {
             const FaceBound &bound = face_bound(pass, pass.face_lists[k]);
@@ -162,7 +168,10 @@ namespace WheelRail
             n /= n.norm();
             const double gap = n * (xs - x);
             if (gap < -margin)
-              continue;
+              {
+                ignored_slack = std::min(ignored_slack, -margin - gap);
+                continue;
+              }
             const double o      = std::max(out, 0.);
             const bool   better = (o < best_out - 1e-12) ||
                                 (o <= best_out + 1e-12 && std::abs(gap) < std::abs(best_gap));
@@ -181,7 +190,9 @@ namespace WheelRail
         if (best_face < 0 || best_gap >= 0)
           {
             separate(state, xs, state.gap, advance);
-            pass.separated_inside[e] = best_face >= 0 && best_out == 0;
+            pass.separated_inside[e] =
+              best_face >= 0 && best_out == 0 &&
+              ignored_slack > std::min(best_gap, (1. - prm.rebuild_fraction) * margin);
             continue;
           }
 
