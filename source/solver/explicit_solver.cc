@@ -342,6 +342,7 @@ namespace WheelRail
     const double     t_new  = t + dt;
     const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
     const double     omega  = prm.initial.wheel_angular_velocity;
+    const auto       bore   = wheelset ? wheelset->bore_motion() : Wheelset::BoreMotion{};
     for (auto &p : prescribed)
       {
         double u_new = p.u_prev;
@@ -353,7 +354,7 @@ namespace WheelRail
             u_new                  = (rotate_about_y(r, omega * t_new) - r)[p.component];
           }
         else if (p.kind == BoundaryKind::rigid_axle)
-          u_new = wheelset->bore_displacement(node_points[p.index])[p.component];
+          u_new = bore(node_points[p.index])[p.component];
         const double v_new = (u_new - p.u_prev) / dt;
         // reaction that enforces the motion, and its work over the step
         // over [t_{n-1/2}, t_{n+1/2}] (the first step: [0, dt/2])

@@ -136,18 +136,6 @@ namespace WheelRail
 
 
 
-  Tensor<1, dim>
-  Wheelset::bore_displacement(const Point<dim> &X) const
-  {
-    const Tensor<1, dim> r = X - centre;
-    const double         c = std::cos(theta), s = std::sin(theta);
-    // rotation about +y
-    const Tensor<1, dim> Rr({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
-    return displacement + Rr - r;
-  }
-
-
-
   double
   Wheelset::kinetic() const
   {

@@ -12,6 +12,8 @@
 #include <wheelrail/base/checkpoint.h>
 #include <wheelrail/parameters/parameters.h>
 
+#include <cmath>
+
 namespace WheelRail
 {
   /**
@@ -98,9 +100,35 @@ namespace WheelRail
             const double          dt,
             const double          t);
 
+    /** The rigid motion of the bore in the current state, evaluated per
+     *  node without the trigonometry of the angle. */
+    struct BoreMotion
+    {
+      Point<dim>     centre;       ///< reference axle centre
+      Tensor<1, dim> displacement; ///< of the axle
+      double         c, s;         ///< cos and sin of the angle
+      /** Displacement of the bore node with reference position @p X. */
+      Tensor<1, dim>
+      operator()(const Point<dim> &X) const
+      {
+        const Tensor<1, dim> r = X - centre;
+        // rotation about +y
+        const Tensor<1, dim> Rr({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
+        return displacement + Rr - r;
+      }
+    };
+    BoreMotion
+    bore_motion() const
+    {
+      return {centre, displacement, std::cos(theta), std::sin(theta)};
+    }
+
     /** Displacement of the bore node with reference position X. */
     Tensor<1, dim>
-    bore_displacement(const Point<dim> &X) const;
+    bore_displacement(const Point<dim> &X) const
+    {
+      return bore_motion()(X);
+    }
 
     Point<dim>
     axle_position() const
