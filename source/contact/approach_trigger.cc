@@ -212,7 +212,7 @@ namespace WheelRail
         timing.wait += lap(clock);
       }
 
-    const double keep = (1. - prm.rebuild_fraction) * prm.search_margin;
+    const double keep = kept_distance();
     if (advance && step_motion_known && !(step[0] + step[1] < keep))
       {
         std::ostringstream message;

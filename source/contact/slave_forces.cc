@@ -85,7 +85,7 @@ namespace WheelRail
   void
   PenaltyContact::set_resume_motion(Pass &pass, const bool advance)
   {
-    const double reach = (1. - prm.rebuild_fraction) * prm.search_margin;
+    const double reach = kept_distance();
     for (unsigned int k = 0; k < pass.evaluated.size(); ++k)
       {
         const unsigned int      s     = pass.candidate_slaves[pass.evaluated[k]];
@@ -190,9 +190,8 @@ namespace WheelRail
         if (best_face < 0 || best_gap >= 0)
           {
             separate(state, xs, state.gap, advance);
-            pass.separated_inside[e] =
-              best_face >= 0 && best_out == 0 &&
-              ignored_slack > std::min(best_gap, (1. - prm.rebuild_fraction) * margin);
+            pass.separated_inside[e] = best_face >= 0 && best_out == 0 &&
+                                       ignored_slack > std::min(best_gap, kept_distance());
             continue;
           }
 

@@ -217,7 +217,7 @@ namespace WheelRail
     /**
      * With @p every, add_forces() computes every candidate slave, also the
      * separated ones that cannot reach their faces yet and are otherwise
-     * left as they are (compute_slaves()): their gaps are then current, for
+     * left as they are (select_slaves()): their gaps are then current, for
      * the output of the run's last step.
      */
     void
@@ -510,6 +510,14 @@ namespace WheelRail
     {
       return area_penalty ? std::min(face.stiffness, area_stiffness(slave.area)) : face.stiffness;
     }
+    /** (1 - Rebuild fraction) x Search margin [m]: how close a slave and a
+     *  master face that are not candidates of each other can come before a
+     *  search (approach_trigger.cc). */
+    double
+    kept_distance() const
+    {
+      return (1. - prm.rebuild_fraction) * prm.search_margin;
+    }
     /** SF K A / h_ref: the 'area' penalty stiffness of the area @p area [N/m]. */
     double
     area_stiffness(const double area) const
@@ -584,8 +592,8 @@ namespace WheelRail
      *  largest motion of an active node since the evaluation before [m]. */
     double                  approach_motion = 0;
     std::vector<Point<dim>> active_x_previous; ///< node_x of active_nodes at the last evaluation
-    /** Pass::resume_motion holds for this rank's blocks (no search, restart
-     *  or static evaluation since they were set). */
+    /** Pass::resume_motion holds (no search, restart or static evaluation
+     *  since it was set). */
     bool         resume_valid      = false;
     bool         every_slave       = false; ///< evaluate_every_slave()
     bool         overlap_checked   = false; ///< check_initial_overlap() done

@@ -326,8 +326,8 @@ namespace WheelRail
     }
 
     /** Per vertex a, q_a = sum_alpha hg[alpha][a] g_alpha (the inverse of
-     *  hourglass_sums(): 12 additions instead of 24), as the pair (A, B)
-     *  with q_a = A + B or A - B (@p minus). */
+     *  hourglass_sums(): 12 additions instead of 24) from the four sums
+     *  and differences of the g_alpha formed once. */
     struct HourglassSpread
     {
       v8d A, B, P, M;

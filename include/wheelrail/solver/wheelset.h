@@ -123,13 +123,6 @@ namespace WheelRail
       return {centre, displacement, std::cos(theta), std::sin(theta)};
     }
 
-    /** Displacement of the bore node with reference position X. */
-    Tensor<1, dim>
-    bore_displacement(const Point<dim> &X) const
-    {
-      return bore_motion()(X);
-    }
-
     Point<dim>
     axle_position() const
     {
