@@ -79,18 +79,46 @@ namespace WheelRail
                                                     ghosts,
                                                     mpi_communicator);
 
+    // group the lines by node where the dim lines of a node have the same
+    // masters (shifted by the component) and the same weights; the groups
+    // keep the lines' order, so every entry receives its additions in the
+    // same order as line by line
+    const auto &lines     = hanging_constraints.get_lines();
+    const auto  groupable = [&](const unsigned int k) {
+      if (k + dim > lines.size())
+        return false;
+      const auto first = vector_partitioner->global_to_local(lines[k].index);
+      for (unsigned int d = 1; d < dim; ++d)
+        {
+          const auto &line = lines[k + d];
+          if (vector_partitioner->global_to_local(line.index) != first + d ||
+              line.entries.size() != lines[k].entries.size())
+            return false;
+          for (unsigned int j = 0; j < line.entries.size(); ++j)
+            if (vector_partitioner->global_to_local(line.entries[j].first) !=
+                  vector_partitioner->global_to_local(lines[k].entries[j].first) + d ||
+                line.entries[j].second != lines[k].entries[j].second)
+              return false;
+        }
+      return true;
+    };
+    constraint_width = dim;
+    for (unsigned int k = 0; k < lines.size() && constraint_width == dim; k += dim)
+      if (!groupable(k))
+        constraint_width = 1;
+
     constrained_dofs.clear();
     constraint_offsets.assign(1, 0);
     constraint_masters.clear();
     constraint_weights.clear();
-    for (const auto &line : hanging_constraints.get_lines())
+    for (unsigned int k = 0; k < lines.size(); k += constraint_width)
       {
-        for (const auto &entry : line.entries)
+        for (const auto &entry : lines[k].entries)
           {
             constraint_masters.push_back(vector_partitioner->global_to_local(entry.first));
             constraint_weights.push_back(entry.second);
           }
-        constrained_dofs.push_back(vector_partitioner->global_to_local(line.index));
+        constrained_dofs.push_back(vector_partitioner->global_to_local(lines[k].index));
         constraint_offsets.push_back(constraint_masters.size());
       }
   }
@@ -145,14 +173,17 @@ namespace WheelRail
     VectorType m = mass;
     m.update_ghost_values();
     for (unsigned int c = 0; c < constrained_dofs.size(); ++c)
-      {
-        double mobility = 0;
-        for (unsigned int k = constraint_offsets[c]; k < constraint_offsets[c + 1]; ++k)
-          if (m.local_element(constraint_masters[k]) > 0)
-            mobility += constraint_weights[k] * constraint_weights[k] /
-                        m.local_element(constraint_masters[k]);
-        m.local_element(constrained_dofs[c]) = mobility > 0 ? 1. / mobility : 0.;
-      }
+      for (unsigned int d = 0; d < constraint_width; ++d)
+        {
+          double mobility = 0;
+          for (unsigned int k = constraint_offsets[c]; k < constraint_offsets[c + 1]; ++k)
+            {
+              const double master = m.local_element(constraint_masters[k] + d);
+              if (master > 0)
+                mobility += constraint_weights[k] * constraint_weights[k] / master;
+            }
+          m.local_element(constrained_dofs[c] + d) = mobility > 0 ? 1. / mobility : 0.;
+        }
     return m;
   }
 
@@ -193,40 +224,85 @@ namespace WheelRail
   }
 
 
+  namespace
+  {
+    // The loops of condense() and distribute() for constraint groups of
+    // `width` DoFs: flat arrays, the groups stream, only the masters are
+    // gathered.
+    template <unsigned int width>
+    void
+    condense_groups(double                          *X,
+                    const std::vector<unsigned int> &constrained,
+                    const std::vector<unsigned int> &offsets,
+                    const std::vector<unsigned int> &masters,
+                    const std::vector<double>       &weights)
+    {
+      for (unsigned int k = 0; k < constrained.size(); ++k)
+        {
+          double value[width];
+          for (unsigned int d = 0; d < width; ++d)
+            value[d] = X[constrained[k] + d];
+          for (unsigned int j = offsets[k]; j < offsets[k + 1]; ++j)
+            for (unsigned int d = 0; d < width; ++d)
+              X[masters[j] + d] += weights[j] * value[d];
+          for (unsigned int d = 0; d < width; ++d)
+            X[constrained[k] + d] = 0;
+        }
+    }
+
+    template <unsigned int width>
+    void
+    distribute_groups(double                          *X,
+                      double                          *Y,
+                      const std::vector<unsigned int> &constrained,
+                      const std::vector<unsigned int> &offsets,
+                      const std::vector<unsigned int> &masters,
+                      const std::vector<double>       &weights)
+    {
+      for (unsigned int k = 0; k < constrained.size(); ++k)
+        {
+          double value[width] = {}, value_y[width] = {};
+          for (unsigned int j = offsets[k]; j < offsets[k + 1]; ++j)
+            for (unsigned int d = 0; d < width; ++d)
+              {
+                value[d] += weights[j] * X[masters[j] + d];
+                if (Y)
+                  value_y[d] += weights[j] * Y[masters[j] + d];
+              }
+          for (unsigned int d = 0; d < width; ++d)
+            {
+              X[constrained[k] + d] = value[d];
+              if (Y)
+                Y[constrained[k] + d] = value_y[d];
+            }
+        }
+    }
+  } // namespace
+
+
   void
   ElasticOperator::condense(VectorType &x) const
   {
-    // flat arrays: the lines stream, only the masters are gathered
-    double *X = x.begin();
-    for (unsigned int k = 0; k < constrained_dofs.size(); ++k)
-      {
-        const double value = X[constrained_dofs[k]];
-        for (unsigned int j = constraint_offsets[k]; j < constraint_offsets[k + 1]; ++j)
-          X[constraint_masters[j]] += constraint_weights[j] * value;
-        X[constrained_dofs[k]] = 0;
-      }
+    if (constraint_width == dim)
+      condense_groups<dim>(
+        x.begin(), constrained_dofs, constraint_offsets, constraint_masters, constraint_weights);
+    else
+      condense_groups<1>(
+        x.begin(), constrained_dofs, constraint_offsets, constraint_masters, constraint_weights);
   }
 
 
   void
   ElasticOperator::distribute(VectorType &x, VectorType *y) const
   {
-    // both vectors in one pass over the lines (u and v every step)
-    double *X = x.begin();
+    // both vectors in one pass over the groups (u and v every step)
     double *Y = y ? y->begin() : nullptr;
-    for (unsigned int k = 0; k < constrained_dofs.size(); ++k)
-      {
-        double value = 0, value_y = 0;
-        for (unsigned int j = constraint_offsets[k]; j < constraint_offsets[k + 1]; ++j)
-          {
-            value += constraint_weights[j] * X[constraint_masters[j]];
-            if (Y)
-              value_y += constraint_weights[j] * Y[constraint_masters[j]];
-          }
-        X[constrained_dofs[k]] = value;
-        if (Y)
-          Y[constrained_dofs[k]] = value_y;
-      }
+    if (constraint_width == dim)
+      distribute_groups<dim>(
+        x.begin(), Y, constrained_dofs, constraint_offsets, constraint_masters, constraint_weights);
+    else
+      distribute_groups<1>(
+        x.begin(), Y, constrained_dofs, constraint_offsets, constraint_masters, constraint_weights);
   }
 
 

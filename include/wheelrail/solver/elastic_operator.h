@@ -302,10 +302,14 @@ namespace WheelRail
     AffineConstraints<double> hanging_constraints;
     DampingModel              damping = DampingModel::none;
 
-    /** Hanging-node constraints in local indices, flat (CSR): line k
-     *  constrains constrained_dofs[k] to the masters constraint_masters[j]
+    /** Hanging-node constraints in local indices, flat (CSR) and grouped
+     *  by node: group k constrains the constraint_width DoFs
+     *  constrained_dofs[k] + d to the masters constraint_masters[j] + d
      *  with weights constraint_weights[j], j in [constraint_offsets[k],
-     *  constraint_offsets[k + 1]). */
+     *  constraint_offsets[k + 1]). constraint_width is dim where every
+     *  node's lines share masters and weights (FE_Q(1)^dim, node-blocked
+     *  DoFs), else 1 (one group per line). */
+    unsigned int              constraint_width = 1;
     std::vector<unsigned int> constrained_dofs;
     std::vector<unsigned int> constraint_offsets;
     std::vector<unsigned int> constraint_masters;
