@@ -145,12 +145,10 @@ namespace WheelRail
                    batch_forces<false>(data, lame_lambda, lame_mu, u_batch, v_batch, fb);
         if (family != numbers::invalid_unsigned_int)
           {
-            // each grid node's sum in a register, its terms in the order
-            // of the general scatter below (ascending vertex): the same bits
             scatter_family(F,
                            &family_nodes[std::size_t(family) * 27],
                            fb,
-                           std::make_integer_sequence<unsigned int, 27>{});
+                           std::make_integer_sequence<unsigned int, 8>{});
             continue;
           }
         const unsigned int n_valid = std::min(W, n_cells - batch * W);

@@ -202,71 +202,89 @@ namespace WheelRail
                                   family_offset[6],
                                   family_offset[7]};
 
-    /** Per grid node, the (vertex, lane) pairs that reach it as offsets
-     *  a * 3 W + l into a [vertex][component][lane] array, by ascending a:
-     *  the order in which the general scatter adds them. A compile-time
-     *  table, so that the family scatter unrolls into straight-line code. */
-    struct FamilyScatter
+    /** The family scatter in vector form: for vertex a, which lanes
+     *  (children) of its force vector reach the grid nodes 8 r .. 8 r + 7
+     *  (lane index, or W for none: a lane of a zero vector). */
+    struct FamilyVectorScatter
     {
-      unsigned char start[28];
-      unsigned char entry[64];
-      constexpr FamilyScatter()
-        : start{}
-        , entry{}
+      long long lane[8][4][W];
+      bool      hit[8][4];
+      constexpr FamilyVectorScatter()
+        : lane{}
+        , hit{}
       {
-        unsigned int count[27] = {};
         for (unsigned int a = 0; a < 8; ++a)
-          for (unsigned int l = 0; l < W; ++l)
-            ++count[family_offset[a] + family_offset[l]];
-        start[0] = 0;
-        for (unsigned int n = 0; n < 27; ++n)
-          start[n + 1] = start[n] + count[n];
-        unsigned int next[27] = {};
-        for (unsigned int n = 0; n < 27; ++n)
-          next[n] = start[n];
-        for (unsigned int a = 0; a < 8; ++a)
-          for (unsigned int l = 0; l < W; ++l)
-            entry[next[family_offset[a] + family_offset[l]]++] = a * 3 * W + l;
+          for (unsigned int r = 0; r < 4; ++r)
+            for (unsigned int i = 0; i < W; ++i)
+              {
+                lane[a][r][i] = W;
+                for (unsigned int l = 0; l < W; ++l)
+                  if (family_offset[a] + family_offset[l] == 8 * r + i)
+                    {
+                      lane[a][r][i] = l;
+                      hit[a][r]     = true;
+                    }
+              }
       }
     };
-    inline constexpr FamilyScatter family_scatter{};
+    inline constexpr FamilyVectorScatter family_vector_scatter{};
 
-    /** Adds to the three components of grid node @p n at F + @p idx its
-     *  terms of the batch forces @p fb, in the table's order. */
-    template <unsigned int n, unsigned int... k>
+    /** Adds vertex @p a's forces @p f (over the children) to the grid sums
+     *  @p sums (27 grid nodes in 4 vectors), by one permutation per vector
+     *  that it reaches. */
+    template <unsigned int a, unsigned int... r>
     WHEELRAIL_ALWAYS_INLINE void
-    scatter_grid_node(double            *F,
-                      const unsigned int idx,
-                      const double *__restrict fb,
-                      std::integer_sequence<unsigned int, k...>)
+    add_vertex_to_grid(const v8d &f, v8d (&sums)[4], std::integer_sequence<unsigned int, r...>)
     {
-      double f0 = F[idx], f1 = F[idx + 1], f2 = F[idx + 2];
-      ((f0 += fb[family_scatter.entry[family_scatter.start[n] + k]],
-        f1 += fb[family_scatter.entry[family_scatter.start[n] + k] + W],
-        f2 += fb[family_scatter.entry[family_scatter.start[n] + k] + 2 * W]),
-       ...);
-      F[idx]     = f0;
-      F[idx + 1] = f1;
-      F[idx + 2] = f2;
+      (
+        [&] {
+          if constexpr (family_vector_scatter.hit[a][r])
+            {
+              constexpr v8i lanes = {family_vector_scatter.lane[a][r][0],
+                                     family_vector_scatter.lane[a][r][1],
+                                     family_vector_scatter.lane[a][r][2],
+                                     family_vector_scatter.lane[a][r][3],
+                                     family_vector_scatter.lane[a][r][4],
+                                     family_vector_scatter.lane[a][r][5],
+                                     family_vector_scatter.lane[a][r][6],
+                                     family_vector_scatter.lane[a][r][7]};
+              sums[r] += __builtin_shuffle(f, v8d{}, lanes);
+            }
+        }(),
+        ...);
     }
 
-    /** The family scatter: each of the 27 grid nodes of @p grid gets its
-     *  terms of @p fb added in ascending vertex order (the order of the
-     *  general scatter: the same bits), unrolled at compile time. */
-    template <unsigned int... n>
+    /** The family scatter: the batch forces @p fb summed per grid node
+     *  in vector registers (terms in ascending vertex order), then each
+     *  grid node's three sums added to F. */
+    template <unsigned int... a>
     WHEELRAIL_ALWAYS_INLINE void
     scatter_family(double             *F,
                    const unsigned int *grid,
                    const double *__restrict fb,
-                   std::integer_sequence<unsigned int, n...>)
+                   std::integer_sequence<unsigned int, a...>)
     {
-      (scatter_grid_node<n>(
-         F,
-         grid[n],
-         fb,
-         std::make_integer_sequence<unsigned int,
-                                    family_scatter.start[n + 1] - family_scatter.start[n]>{}),
-       ...);
+      alignas(64) double grid_sums[3][32];
+#pragma GCC unroll 3
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          v8d sums[4] = {};
+          (add_vertex_to_grid<a>(load(fb + (a * 3 + d) * W),
+                                 sums,
+                                 std::make_integer_sequence<unsigned int, 4>{}),
+           ...);
+#pragma GCC unroll 4
+          for (unsigned int r = 0; r < 4; ++r)
+            store(&grid_sums[d][8 * r], sums[r]);
+        }
+#pragma GCC unroll 27
+      for (unsigned int n = 0; n < 27; ++n)
+        {
+          const unsigned int idx = grid[n];
+          F[idx] += grid_sums[0][n];
+          F[idx + 1] += grid_sums[1][n];
+          F[idx + 2] += grid_sums[2][n];
+        }
     }
 
     /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
