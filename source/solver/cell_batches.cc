@@ -386,6 +386,14 @@ namespace WheelRail
           }
       }
     family_nodes.shrink_to_fit();
+    // the 4-wide loads of gather_family_grid() read one value past a
+    // node's z: families with the vectors' last node gather by scalars
+    const std::size_t n_local =
+      vector_partitioner->locally_owned_size() + vector_partitioner->n_ghost_indices();
+    family_wide_loads.assign(family_nodes.size() / 27, 1);
+    for (std::size_t n = 0; n < family_nodes.size(); ++n)
+      if (family_nodes[n] + 4 > n_local)
+        family_wide_loads[n / 27] = 0;
     // padding lanes point at node 0 with zero volume: they produce zero force
     // and are never scattered
   }

@@ -74,15 +74,22 @@ namespace WheelRail
         {
           // the 27 grid nodes once
           const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
-          for (unsigned int n = 0; n < 27; ++n)
+          if (family_wide_loads[family])
             {
-              const unsigned int idx = grid[n];
-              for (unsigned int d = 0; d < 3; ++d)
-                ug[slot][d][n] = U[idx + d];
+              gather_family_grid(U, grid, ug[slot]);
               if (with_damping)
-                for (unsigned int d = 0; d < 3; ++d)
-                  vg[slot][d][n] = V[idx + d];
+                gather_family_grid(V, grid, vg[slot]);
             }
+          else
+            for (unsigned int n = 0; n < 27; ++n)
+              {
+                const unsigned int idx = grid[n];
+                for (unsigned int d = 0; d < 3; ++d)
+                  ug[slot][d][n] = U[idx + d];
+                if (with_damping)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    vg[slot][d][n] = V[idx + d];
+              }
         }
       else
         {

@@ -329,6 +329,9 @@ namespace WheelRail
      *  order (lane l = child l): their 27 distinct nodes, the x-DoF of each
      *  in the parent's 3x3x3 lexicographic grid ([family][27]). */
     std::vector<unsigned int> family_nodes;
+    /** Per family: 1 if all its nodes are 4 values or more before the end
+     *  of the nodal vectors (gather_family_grid()'s 4-wide loads), else 0. */
+    std::vector<unsigned char> family_wide_loads;
     /** Index into family_nodes / 27 of each batch, or invalid_unsigned_int. */
     std::vector<unsigned int>       batch_family;
     std::vector<types::material_id> batch_material;

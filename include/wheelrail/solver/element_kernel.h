@@ -13,6 +13,7 @@
 #ifndef wheelrail_solver_element_kernel_h
 #define wheelrail_solver_element_kernel_h
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 
@@ -201,6 +202,39 @@ namespace WheelRail
                                   family_offset[5],
                                   family_offset[6],
                                   family_offset[7]};
+
+    typedef double v4d __attribute__((vector_size(32)));
+
+    /** The nodal values of a family's 27 grid nodes @p grid (x-DoF
+     *  indices into @p X, node-blocked) per component, @p g[d][n]: each
+     *  node's x, y, z (and one value beyond, unused) by one 4-wide load,
+     *  eight nodes transposed by permutations (lanes 27-31 repeat node 26).
+     *  The values are moved, not combined: the same bits as scalar copies.
+     *  Every node needs idx + 4 <= the vector's size. */
+    WHEELRAIL_ALWAYS_INLINE void
+    gather_family_grid(const double *X, const unsigned int *grid, double (&g)[3][32])
+    {
+#pragma GCC unroll 4
+      for (unsigned int q = 0; q < 4; ++q)
+        {
+          v4d node[8];
+#pragma GCC unroll 8
+          for (unsigned int k = 0; k < 8; ++k)
+            __builtin_memcpy(&node[k], X + grid[std::min(8 * q + k, 26u)], sizeof(v4d));
+          // pairs of nodes, then x and y of four nodes, z of four nodes
+          const v8d n01 = __builtin_shufflevector(node[0], node[1], 0, 1, 2, 3, 4, 5, 6, 7);
+          const v8d n23 = __builtin_shufflevector(node[2], node[3], 0, 1, 2, 3, 4, 5, 6, 7);
+          const v8d n45 = __builtin_shufflevector(node[4], node[5], 0, 1, 2, 3, 4, 5, 6, 7);
+          const v8d n67 = __builtin_shufflevector(node[6], node[7], 0, 1, 2, 3, 4, 5, 6, 7);
+          const v8d xy0 = __builtin_shufflevector(n01, n23, 0, 4, 8, 12, 1, 5, 9, 13);
+          const v8d xy1 = __builtin_shufflevector(n45, n67, 0, 4, 8, 12, 1, 5, 9, 13);
+          const v8d z0  = __builtin_shufflevector(n01, n23, 2, 6, 10, 14, 2, 6, 10, 14);
+          const v8d z1  = __builtin_shufflevector(n45, n67, 2, 6, 10, 14, 2, 6, 10, 14);
+          store(&g[0][8 * q], __builtin_shufflevector(xy0, xy1, 0, 1, 2, 3, 8, 9, 10, 11));
+          store(&g[1][8 * q], __builtin_shufflevector(xy0, xy1, 4, 5, 6, 7, 12, 13, 14, 15));
+          store(&g[2][8 * q], __builtin_shufflevector(z0, z1, 0, 1, 2, 3, 8, 9, 10, 11));
+        }
+    }
 
     /** The family scatter in vector form: for vertex a, which lanes
      *  (children) of its force vector reach the grid nodes 8 r .. 8 r + 7
