@@ -56,10 +56,11 @@ namespace WheelRail
                                 const bool         with_damping) const
   {
     // Software pipelined by one batch: the nodal values of batch + 1 are
-    // gathered (scalar stores) before the kernel of batch runs, so that
-    // the kernel's vector loads of them come after the stores have left
-    // the store buffer (a vector load over recent scalar stores cannot be
-    // forwarded and waits for them).
+    // gathered (scalar stores, or a family's grid vectors) before the
+    // kernel of batch runs, so that the vector loads of them (the kernel's,
+    // the family permutations' at other offsets) come after the stores
+    // have left the store buffer (a load that spans several recent stores
+    // cannot be forwarded and waits for them).
     alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
     alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
     std::fill(std::begin(vb), std::end(vb), 0.);
