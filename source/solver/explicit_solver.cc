@@ -11,19 +11,6 @@
 
 namespace WheelRail
 {
-  namespace
-  {
-    /** Rotation about +y by angle @p theta applied to @p r. */
-    Tensor<1, dim>
-    rotate_about_y(const Tensor<1, dim> &r, const double theta)
-    {
-      const double c = std::cos(theta), s = std::sin(theta);
-      return Tensor<1, dim>({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
-    }
-  } // namespace
-
-
-
   ExplicitSolver::ExplicitSolver(const Parameters                          &parameters,
                                  parallel::distributed::Triangulation<dim> &tria)
     : ElasticOperator(parameters, tria)
@@ -342,7 +329,9 @@ namespace WheelRail
     const double     t_new  = t + dt;
     const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
     const double     omega  = prm.initial.wheel_angular_velocity;
-    const auto       bore   = wheelset ? wheelset->bore_motion() : Wheelset::BoreMotion{};
+    // the axle's angle at t_new, its cosine and sine once for all its DoFs
+    const double spin_c = std::cos(omega * t_new), spin_s = std::sin(omega * t_new);
+    const auto   bore = wheelset ? wheelset->bore_motion() : Wheelset::BoreMotion{};
     for (auto &p : prescribed)
       {
         double u_new = p.u_prev;
@@ -351,7 +340,7 @@ namespace WheelRail
         else if (p.kind == BoundaryKind::spinning_axle)
           {
             const Tensor<1, dim> r = node_points[p.index] - centre;
-            u_new                  = (rotate_about_y(r, omega * t_new) - r)[p.component];
+            u_new                  = (rotate_about_y(r, spin_c, spin_s) - r)[p.component];
           }
         else if (p.kind == BoundaryKind::rigid_axle)
           u_new = bore(node_points[p.index])[p.component];

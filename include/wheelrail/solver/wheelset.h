@@ -16,6 +16,14 @@
 
 namespace WheelRail
 {
+  /** @p r rotated about +y by the angle whose cosine and sine are @p c
+   *  and @p s (computed once for many vectors). */
+  inline Tensor<1, dim>
+  rotate_about_y(const Tensor<1, dim> &r, const double c, const double s)
+  {
+    return Tensor<1, dim>({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
+  }
+
   /**
    * Rigid-body state of the axle (translation in x and z, rotation about y;
    * y is fixed) and of the sprung mass (vertical; horizontally it moves with
@@ -112,9 +120,7 @@ namespace WheelRail
       operator()(const Point<dim> &X) const
       {
         const Tensor<1, dim> r = X - centre;
-        // rotation about +y
-        const Tensor<1, dim> Rr({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
-        return displacement + Rr - r;
+        return displacement + rotate_about_y(r, c, s) - r;
       }
     };
     BoreMotion
