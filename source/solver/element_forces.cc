@@ -1,8 +1,9 @@
 /**
  * @file element_forces.cc
  * The operations of ElasticOperator on the element data: the element force
- * loop (gather, kernel, scatter), the small-strain stiffness matrix, strain
- * energies, cell stresses and nodal displacement gradients. Compiled with
+ * loop (gather, kernel, scatter; strain energies on request), the
+ * small-strain stiffness matrix, cell stresses and nodal displacement
+ * gradients. Compiled with
  * -O3 (CMakeLists.txt) together with the kernel of element_kernel.h.
  */
 #include <deal.II/base/symmetric_tensor.h>
@@ -24,7 +25,8 @@ namespace WheelRail
   ElasticOperator::element_forces(const VectorType &u_in,
                                   const VectorType *v_in,
                                   VectorType       &f_out,
-                                  const bool        f_is_zero) const
+                                  const bool        f_is_zero,
+                                  StrainEnergies   *energies) const
   {
     if (!f_is_zero)
       f_out = 0.;
@@ -38,22 +40,30 @@ namespace WheelRail
     const double *V            = v_in ? v_in->begin() : nullptr;
     double       *F            = f_out.begin();
     const bool    with_damping = (v_in != nullptr) && damping != DampingModel::none;
-    if (prm.solver.single_precision_geometry)
-      return element_loop<SingleData>(
-        batch_single.data(), SingleField::n_double, U, V, F, with_damping);
-    return element_loop<DoubleData>(batch_data.data(), Field::n_fields * W, U, V, F, with_damping);
+    const bool    single       = prm.solver.single_precision_geometry;
+    if (energies != nullptr)
+      return single ?
+               element_loop<SingleData, true>(
+                 batch_single.data(), SingleField::n_double, U, V, F, with_damping, energies) :
+               element_loop<DoubleData, true>(
+                 batch_data.data(), Field::n_fields * W, U, V, F, with_damping, energies);
+    return single ? element_loop<SingleData, false>(
+                      batch_single.data(), SingleField::n_double, U, V, F, with_damping, nullptr) :
+                    element_loop<DoubleData, false>(
+                      batch_data.data(), Field::n_fields * W, U, V, F, with_damping, nullptr);
   }
 
 
 
-  template <typename Data>
+  template <typename Data, bool with_energies>
   double
   ElasticOperator::element_loop(const double      *batch_blocks,
                                 const unsigned int block_size,
                                 const double      *U,
                                 const double      *V,
                                 double            *F,
-                                const bool         with_damping) const
+                                const bool         with_damping,
+                                StrainEnergies    *energies) const
   {
     // Software pipelined by one batch: the nodal values of batch + 1 are
     // gathered (scalar stores, or a family's grid vectors) before the
@@ -107,7 +117,8 @@ namespace WheelRail
               }
         }
     };
-    double power = 0;
+    double        power = 0;
+    BatchEnergies batch_energies;
     if (n_batches > 0)
       gather(0, 0);
     for (unsigned int batch = 0; batch < n_batches; ++batch)
@@ -148,9 +159,20 @@ namespace WheelRail
             u_batch = u_gathered[slot];
             v_batch = v_gathered[slot];
           }
-        power += with_damping ?
-                   batch_forces<true>(data, lame_lambda, lame_mu, u_batch, v_batch, fb) :
-                   batch_forces<false>(data, lame_lambda, lame_mu, u_batch, v_batch, fb);
+        if constexpr (with_energies)
+          {
+            const double *kappa_ref = &batch_kappa_ref[std::size_t(batch) * W];
+            power +=
+              with_damping ?
+                batch_forces<true, true>(
+                  data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref) :
+                batch_forces<false, true>(
+                  data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref);
+          }
+        else
+          power += with_damping ?
+                     batch_forces<true>(data, lame_lambda, lame_mu, u_batch, v_batch, fb) :
+                     batch_forces<false>(data, lame_lambda, lame_mu, u_batch, v_batch, fb);
         if (family != numbers::invalid_unsigned_int)
           {
             scatter_family(F,
@@ -167,6 +189,16 @@ namespace WheelRail
               for (unsigned int d = 0; d < 3; ++d)
                 F[idx + d] += fb[(a * 3 + d) * W + l];
             }
+      }
+    if constexpr (with_energies)
+      {
+        *energies = StrainEnergies();
+        for (unsigned int l = 0; l < W; ++l)
+          {
+            energies->internal += batch_energies.internal[l];
+            energies->hourglass += batch_energies.hourglass[l];
+            energies->hourglass_reference += batch_energies.hourglass_reference[l];
+          }
       }
     return power;
   }
@@ -253,55 +285,6 @@ namespace WheelRail
               dofs[3 * a + d] = vector_partitioner->local_to_global(nodes[a * W + l] + d);
           constraints.distribute_local_to_global(K, dofs, matrix);
         }
-  }
-
-
-  StrainEnergies
-  ElasticOperator::strain_energies(const VectorType &u) const
-  {
-    const double *U  = u.begin();
-    double        ie = 0, hge = 0, hge_ref = 0;
-    for (unsigned int batch = 0; batch < n_batches; ++batch)
-      {
-        const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
-        const double       *data    = &batch_data[std::size_t(batch) * Field::n_fields * W];
-        const unsigned int  n_valid = std::min(W, n_cells - batch * W);
-        for (unsigned int l = 0; l < n_valid; ++l)
-          {
-            double H[3][3];
-            displacement_gradient(U, nodes, data, l, H);
-            double E[3][3], EE = 0;
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                {
-                  double hth = 0;
-                  for (unsigned int k = 0; k < 3; ++k)
-                    hth += H[k][i] * H[k][j];
-                  E[i][j] = 0.5 * (H[i][j] + H[j][i] + hth);
-                  EE += E[i][j] * E[i][j];
-                }
-            const double trE = E[0][0] + E[1][1] + E[2][2];
-            ie += data[Field::volume * W + l] * (0.5 * lame_lambda * trE * trE + lame_mu * EE);
-            double gg = 0;
-            for (unsigned int al = 0; al < 4; ++al)
-              for (unsigned int i = 0; i < 3; ++i)
-                {
-                  double s = 0;
-                  for (unsigned int a = 0; a < 8; ++a)
-                    s += hg[al][a] * U[nodes[a * W + l] + i];
-                  for (unsigned int j = 0; j < 3; ++j)
-                    s -= data[(Field::c + al * 3 + j) * W + l] * H[i][j];
-                  gg += s * s;
-                }
-            hge += 0.5 * data[Field::kappa * W + l] * gg;
-            hge_ref += 0.5 * batch_kappa_ref[std::size_t(batch) * W + l] * gg;
-          }
-      }
-    StrainEnergies e;
-    e.internal            = ie;
-    e.hourglass           = hge;
-    e.hourglass_reference = hge_ref;
-    return e;
   }
 
 

@@ -116,10 +116,11 @@ namespace WheelRail
                                   VectorType       &f_out,
                                   const bool        with_contact,
                                   const bool        advance,
-                                  const bool        f_is_zero)
+                                  const bool        f_is_zero,
+                                  StrainEnergies   *strain)
   {
     Clock::time_point clock = Clock::now();
-    const double      power = element_forces(u_in, v_in, f_out, f_is_zero);
+    const double      power = element_forces(u_in, v_in, f_out, f_is_zero, strain);
     times.elements += lap(clock);
     if (with_contact && contact != nullptr)
       {
@@ -174,20 +175,25 @@ namespace WheelRail
     double            gravity_work = 0;
     if (energies)
       {
-        energies->time                = t;
-        energies->step                = n_steps;
-        const StrainEnergies strain   = strain_energies(u);
-        energies->internal            = strain.internal;
-        energies->hourglass           = strain.hourglass;
-        energies->hourglass_reference = strain.hourglass_reference;
+        energies->time = t;
+        energies->step = n_steps;
         for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
           gravity_work += f_ext.local_element(i) * (u.local_element(i) - u0.local_element(i));
         times.energies += lap(clock);
       }
 
-    const bool damping    = damping_model() != DampingModel::none;
-    double     power      = assemble_forces(u, damping ? &v : nullptr, f, true, true, f_cleared);
-    double     runup_work = 0;
+    // the strain energies at t_n come from the force pass over the cells
+    const bool     damping = damping_model() != DampingModel::none;
+    StrainEnergies strain;
+    double         power = assemble_forces(
+      u, damping ? &v : nullptr, f, true, true, f_cleared, energies ? &strain : nullptr);
+    if (energies)
+      {
+        energies->internal            = strain.internal;
+        energies->hourglass           = strain.hourglass;
+        energies->hourglass_reference = strain.hourglass_reference;
+      }
+    double runup_work = 0;
     if (wheelset && t < prm.wheelset.runup_time && prm.wheelset.runup_damping > 0)
       power += add_runup_damping(h, runup_work);
     clock = Clock::now();

@@ -95,13 +95,16 @@ namespace WheelRail
      * compressed (the caller adds contact forces, then condenses). Damping
      * forces only if @p v is given and the damping model is not none.
      * With @p f_is_zero the caller guarantees f = 0 already (owned and ghost
-     * entries). Returns the damping power.
+     * entries). With @p energies, also this rank's strain energies at u
+     * (of the operator the forces come from: with single-precision
+     * geometry, its rounded factors). Returns the damping power.
      */
     double
     element_forces(const VectorType &u,
                    const VectorType *v,
                    VectorType       &f,
-                   const bool        f_is_zero) const;
+                   const bool        f_is_zero,
+                   StrainEnergies   *energies = nullptr) const;
     /** Add hanging-node entries of @p f to their masters and zero them. */
     void
     condense(VectorType &f) const;
@@ -117,9 +120,6 @@ namespace WheelRail
     void
     assemble_stiffness(TrilinosWrappers::SparseMatrix  &matrix,
                        const AffineConstraints<double> &constraints) const;
-    /** Internal and hourglass energy at @p u (this rank's cells). */
-    StrainEnergies
-    strain_energies(const VectorType &u) const;
     /** Stress at @p u of every locally owned cell (in active cell index order). */
     std::vector<CellStress>
     stresses(const VectorType &u) const;
@@ -269,15 +269,17 @@ namespace WheelRail
     setup_lumped_mass();
     /** The element force loop over the batches of @p batch_blocks
      *  (@p block_size doubles each), read through @p Data (DoubleData or
-     *  SingleData of element_kernel.h). */
-    template <typename Data>
+     *  SingleData of element_kernel.h); @p with_energies: the strain
+     *  energies into @p energies as well. */
+    template <typename Data, bool with_energies>
     double
     element_loop(const double      *batch_blocks,
                  const unsigned int block_size,
                  const double      *U,
                  const double      *V,
                  double            *F,
-                 const bool         with_damping) const;
+                 const bool         with_damping,
+                 StrainEnergies    *energies) const;
     /** Request a batch's element data (@p size doubles) into the cache. */
     static void
     prefetch_block(const double *block, const unsigned int size);

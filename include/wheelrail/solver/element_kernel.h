@@ -418,6 +418,15 @@ namespace WheelRail
 
 
 
+    /** Strain energies of the batches a force loop has passed, per lane
+     *  (zero on padding lanes, which have zero volume and stiffness). */
+    struct BatchEnergies
+    {
+      v8d internal{};            ///< V0 (lambda/2 tr(E)^2 + mu E:E)
+      v8d hourglass{};           ///< kappa/2 |hourglass modes|^2
+      v8d hourglass_reference{}; ///< the same with the reference QM
+    };
+
     /**
      * Element forces of one batch of W cells: one-point total-Lagrangian
      * St. Venant-Kirchhoff stress, element stiffness damping and FB
@@ -428,15 +437,23 @@ namespace WheelRail
      * damping stress with the elastic one as S = C : (E + beta dE/dt), and
      * the hourglass sums and their forces by partial Walsh-Hadamard
      * transforms over the vertex bits. Returns the damping power.
+     *
+     * With @p with_energies the batch's strain energies at u (from the
+     * same gradient and hourglass modes as the forces, i.e. the energy
+     * whose derivative the forces are) are added to @p energies, with the
+     * reference hourglass stiffness @p kappa_ref (W lanes); the forces
+     * are the same bits either way.
      */
-    template <bool with_damping, typename Data>
+    template <bool with_damping, bool with_energies = false, typename Data>
     WHEELRAIL_ALWAYS_INLINE double
     batch_forces(const Data  &data,
                  const double lambda,
                  const double mu_,
                  const double *__restrict ub,
                  const double *__restrict vb,
-                 double *__restrict fb)
+                 double *__restrict fb,
+                 BatchEnergies *energies  = nullptr,
+                 const double  *kappa_ref = nullptr)
     {
       const v8d V0 = data.volume();
       const v8d la = v8d{} + lambda;
@@ -455,6 +472,33 @@ namespace WheelRail
           const unsigned int i = si[q], j = sj[q];
           const v8d          hth = H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j];
           E[q]                   = 0.5 * (H[i][j] + H[j][i] + hth);
+        }
+
+      if constexpr (with_energies)
+        {
+          // E once more, from a copy of H that the compiler cannot see
+          // through: further uses of the forces' E would change how it is
+          // contracted into FMAs, and with it the forces' last bits
+          v8d h[3][3];
+#pragma GCC unroll 3
+          for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+            for (unsigned int j = 0; j < 3; ++j)
+              h[i][j] = H[i][j];
+          asm("" : "+m"(h));
+          v8d e[6];
+#pragma GCC unroll 6
+          for (unsigned int q = 0; q < 6; ++q)
+            {
+              const unsigned int i = si[q], j = sj[q];
+              e[q] = 0.5 * (h[i][j] + h[j][i] + h[0][i] * h[0][j] + h[1][i] * h[1][j] +
+                            h[2][i] * h[2][j]);
+            }
+          const v8d tr = e[0] + e[1] + e[2];
+          v8d       ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+          const v8d eo = e[3] * e[3] + e[4] * e[4] + e[5] * e[5];
+          ee += eo + eo;
+          energies->internal += V0 * (0.5 * la * tr * tr + mu * ee);
         }
 
       v8d power = {};
@@ -495,7 +539,8 @@ namespace WheelRail
           S[sj[q]][si[q]] = sq;
         }
 
-      v8d g[4][3];
+      v8d                  g[4][3];
+      [[maybe_unused]] v8d modes = {}; // the squared hourglass modes summed (energies)
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)
         {
@@ -505,8 +550,16 @@ namespace WheelRail
           for (unsigned int al = 0; al < 4; ++al)
             {
               const v8d c0 = data.c(al, 0), c1 = data.c(al, 1), c2 = data.c(al, 2);
-              g[al][i] = ka * (s[al] - (c0 * H[i][0] + c1 * H[i][1] + c2 * H[i][2]));
+              const v8d mode = s[al] - (c0 * H[i][0] + c1 * H[i][1] + c2 * H[i][2]);
+              g[al][i]       = ka * mode;
+              if constexpr (with_energies)
+                modes += mode * mode;
             }
+        }
+      if constexpr (with_energies)
+        {
+          energies->hourglass += 0.5 * ka * modes;
+          energies->hourglass_reference += 0.5 * load(kappa_ref) * modes;
         }
 
       v8d T[3][3];

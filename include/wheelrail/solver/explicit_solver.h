@@ -205,14 +205,16 @@ namespace WheelRail
     /** f = f_int(u) + f_damp(v) - f_contact(u); returns the damping power.
      *  Contact is evaluated for a step (friction advanced) if @p advance.
      *  With @p f_is_zero the caller guarantees f = 0 already (owned and
-     *  ghost entries), and the pass that would zero it is left out. */
+     *  ghost entries), and the pass that would zero it is left out. With
+     *  @p strain, this rank's strain energies at u from the same pass. */
     double
     assemble_forces(const VectorType &u,
                     const VectorType *v,
                     VectorType       &f,
                     const bool        with_contact,
                     const bool        advance,
-                    const bool        f_is_zero = false);
+                    const bool        f_is_zero = false,
+                    StrainEnergies   *strain    = nullptr);
     /** Applied forces at t_n into f; returns their work over the first
      *  half of the step (velocity at t_{n-1/2}). */
     double
