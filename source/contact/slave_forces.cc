@@ -345,7 +345,6 @@ namespace WheelRail
         displs[r]        = 2 * block.first;
       }
     exchange_gaps.resize(2 * n);
-    exchange_buffer.clear();
     // 1: in contact, 2: separated with the closest point inside a face, 0: else
     for (unsigned int c = own.first; c < own.second; ++c)
       {
@@ -376,7 +375,10 @@ namespace WheelRail
         displs[r] = total * size;
         total += count;
       }
-    exchange_buffer.resize(total);
+    // grown when needed, never cleared: every entry up to total is written
+    // below or received (a resize from empty would construct them all)
+    if (exchange_buffer.size() < total)
+      exchange_buffer.resize(total);
     for (unsigned int c = own.first,
                       i = displs[Utilities::MPI::this_mpi_process(mpi_communicator)] / size;
          c < own.second;
@@ -416,8 +418,12 @@ namespace WheelRail
   void
   PenaltyContact::accumulate(const Pass &pass, const bool advance)
   {
-    for (const unsigned int s : pass.candidate_slaves)
+    // the slaves evaluated at this step, in candidate order: a slave that
+    // select_slaves() left out was separated when it was last evaluated
+    // (separate() zeroed its losses) and adds nothing
+    for (const unsigned int c : pass.evaluated)
       {
+        const unsigned int      s     = pass.candidate_slaves[c];
         const ContactNodeState &state = pass.slaves[s];
         damping_loss += state.damping_work;
         dissipation += state.friction_loss;
