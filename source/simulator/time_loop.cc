@@ -197,8 +197,8 @@ namespace WheelRail
   void
   Simulator::write_records() const
   {
-    statistics->write_files();
-    probes->write_files();
+    for (const auto &postprocessor : postprocessors)
+      postprocessor->write_files();
     write_series_hdf5(*access, *statistics, *probes);
     if (contact)
       write_contact_nodes(*access, "contact_nodes.csv");
@@ -223,8 +223,8 @@ namespace WheelRail
       }
     if (due && n + 1 < n_steps)
       {
-        statistics->write_files();
-        probes->write_files();
+        for (const auto &postprocessor : postprocessors)
+          postprocessor->write_files();
         write_series_hdf5(*access, *statistics, *probes);
         write_checkpoint();
         last_checkpoint = Clock::now();

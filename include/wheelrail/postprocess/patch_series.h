@@ -28,7 +28,8 @@ namespace WheelRail
    * one group per frame, /tread/K: points (current positions), quads, area
    * and the same fields, listed by patch_series_tread.xdmf. Rank 0 writes (the contact state is
    * replicated); each frame is flushed, and patch_series.xdmf (rewritten
-   * atomically) lists the frames for ParaView.
+   * atomically at report steps, at the run's last frame and by
+   * write_files()) lists the frames for ParaView.
    *
    * Frame k is step (k + 1) N - 1, so a resumed run knows how many frames
    * its checkpoint had: it reopens the file, cuts it to them and goes on.
@@ -41,6 +42,10 @@ namespace WheelRail
 
     void
     execute(const StepInfo &step) override;
+
+    /** The XDMF lists, if frames were written since they were. */
+    void
+    write_files() const override;
 
     /** No state of its own in the checkpoint: the frames follow from the
      *  step, and the file holds them. */
@@ -72,6 +77,8 @@ namespace WheelRail
     std::vector<double>       times; ///< of the frames so far
     /** Nodes and quadrilaterals of each tread frame (0 = none written). */
     std::vector<std::array<unsigned long, 2>> tread_sizes;
+    /** Frames written that the XDMF lists do not list yet. */
+    mutable bool xdmf_pending = false;
   };
 } // namespace WheelRail
 
