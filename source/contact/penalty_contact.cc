@@ -284,31 +284,27 @@ namespace WheelRail
         gather_positions(u, active_gather);
         timing.positions += lap(clock);
       }
-    // the largest motion of a candidate slave or a corner of its faces since
-    // the last evaluation, for select_slaves() (replicated positions: the
-    // same on every rank)
-    if (active_x_previous.size() == active_nodes.size() && resume_valid)
-      {
-        double largest = 0;
-        for (unsigned int k = 0; k < active_nodes.size(); ++k)
-          largest =
-            std::max(largest, node_x[active_nodes[k]].distance_square(active_x_previous[k]));
-        approach_motion += 2. * std::sqrt(largest);
-      }
-    else
-      resume_valid = false;
+    // In one pass over the candidates (replicated positions: the same on
+    // every rank): the largest motion of a candidate slave or a corner of
+    // its faces since the last evaluation, for select_slaves(), and whether
+    // one moved too far since the search (a rebuild at the next step).
+    const bool   motion_known = active_x_previous.size() == active_nodes.size() && resume_valid;
+    const double limit        = prm.rebuild_fraction * prm.search_margin;
+    double       largest      = 0;
+    bool         moved_far    = false;
     active_x_previous.resize(active_nodes.size());
     for (unsigned int k = 0; k < active_nodes.size(); ++k)
-      active_x_previous[k] = node_x[active_nodes[k]];
-
-    // rebuild at the next step when a candidate moved too far
-    const double limit = prm.rebuild_fraction * prm.search_margin;
-    for (const unsigned int n : active_nodes)
-      if (node_x[n].distance_square(node_x_search[n]) > limit * limit)
-        {
-          need_search = true;
-          break;
-        }
+      {
+        const Point<dim> &x = node_x[active_nodes[k]];
+        largest             = std::max(largest, x.distance_square(active_x_previous[k]));
+        moved_far = moved_far || x.distance_square(node_x_search[active_nodes[k]]) > limit * limit;
+        active_x_previous[k] = x;
+      }
+    if (motion_known)
+      approach_motion += 2. * std::sqrt(largest);
+    else
+      resume_valid = false;
+    need_search = need_search || moved_far;
 
     // the averaged nodal normals and the face bounds of this evaluation are
     // computed where compute_slaves() first needs them
