@@ -68,14 +68,10 @@ namespace WheelRail
   double
   PenaltyContact::patch_centre() const
   {
+    // the candidates (in ascending slave order): a slave that is not one
+    // is not in contact (search())
     double fn = 0, fx = 0;
-    for (const auto &s : passes.front().slaves)
-      if (s.in_contact)
-        {
-          fn += s.normal_force;
-          fx += s.normal_force * s.x[0];
-        }
-    for (unsigned int p = 1; p < passes.size(); ++p)
+    for (unsigned int p = 0; p < passes.size(); ++p)
       for (const unsigned int c : passes[p].candidate_slaves)
         {
           const ContactNodeState &s = passes[p].slaves[c];
