@@ -121,7 +121,9 @@ namespace WheelRail
                       "'single' (floats, 46 % fewer bytes streamed per element "
                       "and step; arithmetic and sums stay double, the gradient "
                       "is taken over u_a - u_0 so that a rigid translation adds "
-                      "no strain; doc/performance.md gives its effect).");
+                      "no strain; the strain energies of the statistics come "
+                      "from the same factors; doc/performance.md gives its "
+                      "effect).");
     prm.leave_subsection();
   }
 
