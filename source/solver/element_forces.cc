@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace WheelRail
 {
@@ -40,17 +41,15 @@ namespace WheelRail
     const double *V            = v_in ? v_in->begin() : nullptr;
     double       *F            = f_out.begin();
     const bool    with_damping = (v_in != nullptr) && damping != DampingModel::none;
-    const bool    single       = prm.solver.single_precision_geometry;
-    if (energies != nullptr)
-      return single ?
-               element_loop<SingleData, true>(
+    const auto    loop         = [&](auto with_energies) {
+      constexpr bool e = decltype(with_energies)::value;
+      return prm.solver.single_precision_geometry ?
+                          element_loop<SingleData, e>(
                  batch_single.data(), SingleField::n_double, U, V, F, with_damping, energies) :
-               element_loop<DoubleData, true>(
+                          element_loop<DoubleData, e>(
                  batch_data.data(), Field::n_fields * W, U, V, F, with_damping, energies);
-    return single ? element_loop<SingleData, false>(
-                      batch_single.data(), SingleField::n_double, U, V, F, with_damping, nullptr) :
-                    element_loop<DoubleData, false>(
-                      batch_data.data(), Field::n_fields * W, U, V, F, with_damping, nullptr);
+    };
+    return energies != nullptr ? loop(std::true_type()) : loop(std::false_type());
   }
 
 
@@ -159,20 +158,12 @@ namespace WheelRail
             u_batch = u_gathered[slot];
             v_batch = v_gathered[slot];
           }
-        if constexpr (with_energies)
-          {
-            const double *kappa_ref = &batch_kappa_ref[std::size_t(batch) * W];
-            power +=
-              with_damping ?
-                batch_forces<true, true>(
-                  data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref) :
-                batch_forces<false, true>(
-                  data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref);
-          }
-        else
-          power += with_damping ?
-                     batch_forces<true>(data, lame_lambda, lame_mu, u_batch, v_batch, fb) :
-                     batch_forces<false>(data, lame_lambda, lame_mu, u_batch, v_batch, fb);
+        const double *kappa_ref = &batch_kappa_ref[std::size_t(batch) * W];
+        power += with_damping ?
+                   batch_forces<true, with_energies>(
+                     data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref) :
+                   batch_forces<false, with_energies>(
+                     data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref);
         if (family != numbers::invalid_unsigned_int)
           {
             scatter_family(F,

@@ -418,6 +418,34 @@ namespace WheelRail
 
 
 
+    /** The symmetric tensors of the kernel by their components 00 11 22
+     *  01 02 12. */
+    constexpr unsigned int sym_i[6] = {0, 1, 2, 0, 0, 1}, sym_j[6] = {0, 1, 2, 1, 2, 2};
+
+    /** Green-Lagrange strain E = (H + H^T + H^T H) / 2 of the displacement
+     *  gradient @p H, by its six components. */
+    WHEELRAIL_ALWAYS_INLINE void
+    green_lagrange(const v8d (&H)[3][3], v8d (&E)[6])
+    {
+#pragma GCC unroll 6
+      for (unsigned int q = 0; q < 6; ++q)
+        {
+          const unsigned int i = sym_i[q], j = sym_j[q];
+          const v8d          hth = H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j];
+          E[q]                   = 0.5 * (H[i][j] + H[j][i] + hth);
+        }
+    }
+
+    /** A : A of a symmetric tensor given by its six components. */
+    WHEELRAIL_ALWAYS_INLINE v8d
+    symmetric_square(const v8d (&A)[6])
+    {
+      v8d       d = A[0] * A[0] + A[1] * A[1] + A[2] * A[2];
+      const v8d o = A[3] * A[3] + A[4] * A[4] + A[5] * A[5];
+      d += o + o;
+      return d;
+    }
+
     /** Strain energies of the batches a force loop has passed, per lane
      *  (zero on padding lanes, which have zero volume and stiffness). */
     struct BatchEnergies
@@ -463,16 +491,9 @@ namespace WheelRail
       v8d H[3][3];
       batch_gradient(data, ub, H);
 
-      // symmetric tensors by their components 00 11 22 01 02 12
-      constexpr unsigned int si[6] = {0, 1, 2, 0, 0, 1}, sj[6] = {0, 1, 2, 1, 2, 2};
-      v8d                    E[6];
-#pragma GCC unroll 6
-      for (unsigned int q = 0; q < 6; ++q)
-        {
-          const unsigned int i = si[q], j = sj[q];
-          const v8d          hth = H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j];
-          E[q]                   = 0.5 * (H[i][j] + H[j][i] + hth);
-        }
+      constexpr const unsigned int(&si)[6] = sym_i, (&sj)[6] = sym_j;
+      v8d E[6];
+      green_lagrange(H, E);
 
       if constexpr (with_energies)
         {
@@ -487,18 +508,9 @@ namespace WheelRail
               h[i][j] = H[i][j];
           asm("" : "+m"(h));
           v8d e[6];
-#pragma GCC unroll 6
-          for (unsigned int q = 0; q < 6; ++q)
-            {
-              const unsigned int i = si[q], j = sj[q];
-              e[q] = 0.5 * (h[i][j] + h[j][i] + h[0][i] * h[0][j] + h[1][i] * h[1][j] +
-                            h[2][i] * h[2][j]);
-            }
+          green_lagrange(h, e);
           const v8d tr = e[0] + e[1] + e[2];
-          v8d       ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-          const v8d eo = e[3] * e[3] + e[4] * e[4] + e[5] * e[5];
-          ee += eo + eo;
-          energies->internal += V0 * (0.5 * la * tr * tr + mu * ee);
+          energies->internal += V0 * (0.5 * la * tr * tr + mu * symmetric_square(e));
         }
 
       v8d power = {};
@@ -520,10 +532,7 @@ namespace WheelRail
               Ed[q] = 0.5 * ftl;
             }
           const v8d trEd = Ed[0] + Ed[1] + Ed[2];
-          v8d       dd   = Ed[0] * Ed[0] + Ed[1] * Ed[1] + Ed[2] * Ed[2];
-          const v8d od   = Ed[3] * Ed[3] + Ed[4] * Ed[4] + Ed[5] * Ed[5];
-          dd += od + od;
-          power = beta * V0 * (la * trEd * trEd + 2. * mu * dd);
+          power          = beta * V0 * (la * trEd * trEd + 2. * mu * symmetric_square(Ed));
 #pragma GCC unroll 6
           for (unsigned int q = 0; q < 6; ++q)
             E[q] += beta * Ed[q];
