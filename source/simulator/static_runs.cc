@@ -181,10 +181,10 @@ namespace WheelRail
         Timer timer;
         // the wheel of the rolling run spins: include its centrifugal load
         const double omega = parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
-        solver->add_centrifugal_load(centre, omega, 1.);
+        solver->add_centrifugal_load(centre, omega);
         StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
         const StaticResult  r = statics.solve(wheelset->static_load(), solver_log());
-        solver->add_centrifugal_load(centre, omega, -1.);
+        solver->remove_centrifugal_load();
         axle[2] -= r.axle_displacement;
         // rolling radius: axle height above the contact points
         double fz = 0, z = 0;

@@ -60,10 +60,11 @@ namespace WheelRail
                                            "x,y,z,t",
                                            "Boundary conditions/Applied force");
 
-    t                   = 0;
-    n_steps             = 0;
-    damping_dissipation = 0;
-    boundary_work       = 0;
+    nodal_update_prepared = false;
+    t                     = 0;
+    n_steps               = 0;
+    damping_dissipation   = 0;
+    boundary_work         = 0;
   }
 
 
@@ -220,7 +221,11 @@ namespace WheelRail
     const double      *M  = mass.begin();
     const unsigned int n  = u.locally_owned_size();
     double             ke = 0;
-    if (energies == nullptr)
+    if (energies == nullptr && !nodal_update_prepared)
+      prepare_nodal_update();
+    if (energies == nullptr && nodal_update.active())
+      nodal_update.apply(h, dt, U, V, F);
+    else if (energies == nullptr)
       {
 #pragma omp simd
         for (unsigned int i = 0; i < n; ++i)
@@ -266,6 +271,27 @@ namespace WheelRail
     t = t_new;
     ++n_steps;
     ++times.steps;
+  }
+
+
+  void
+  ExplicitSolver::prepare_nodal_update()
+  {
+    // the prescribed DoFs' u and v are overwritten after the update (but
+    // for an applied force's DoF: its v enters the work before that)
+    std::vector<bool> overwritten(u.locally_owned_size(), false);
+    for (const auto &p : prescribed)
+      overwritten[p.index] = true;
+    for (const auto &[i, d, w] : applied)
+      overwritten[i] = false;
+    nodal_update.prepare(mass.begin(),
+                         inv_mass.begin(),
+                         f_ext.begin(),
+                         node_component.data(),
+                         overwritten,
+                         u.locally_owned_size(),
+                         prm.solver.gravity);
+    nodal_update_prepared = true;
   }
 
 

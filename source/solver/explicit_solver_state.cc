@@ -44,14 +44,26 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::add_centrifugal_load(const Point<dim> &centre,
-                                       const double      omega,
-                                       const double      factor)
+  ExplicitSolver::add_centrifugal_load(const Point<dim> &centre, const double omega)
   {
+    nodal_update_prepared     = false;
+    f_ext_without_centrifugal = f_ext;
     for (unsigned int k = 0; k < f_ext.locally_owned_size(); ++k)
       if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] != 1)
-        f_ext.local_element(k) += factor * mass.local_element(k) * omega * omega *
-                                  (node_points[k] - centre)[node_component[k]];
+        f_ext.local_element(k) +=
+          mass.local_element(k) * omega * omega * (node_points[k] - centre)[node_component[k]];
+  }
+
+
+
+  void
+  ExplicitSolver::remove_centrifugal_load()
+  {
+    AssertThrow(f_ext_without_centrifugal.size() == f_ext.size(),
+                ExcMessage("Internal error: no centrifugal load to remove."));
+    nodal_update_prepared = false;
+    f_ext                 = f_ext_without_centrifugal;
+    f_ext_without_centrifugal.reinit(0);
   }
 
 
@@ -173,6 +185,7 @@ namespace WheelRail
             prescribed[i].u_prev = states[2 * i];
             prescribed[i].v_prev = states[2 * i + 1];
           }
+        nodal_update_prepared = false;
         for (VectorType *x : {&u, &v, &f_ext, &u0})
           x->update_ghost_values();
         distribute(u);

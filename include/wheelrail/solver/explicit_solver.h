@@ -14,6 +14,7 @@
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/boundary_conditions.h>
 #include <wheelrail/solver/elastic_operator.h>
+#include <wheelrail/solver/nodal_update.h>
 #include <wheelrail/solver/wheelset.h>
 
 #include <functional>
@@ -117,15 +118,19 @@ namespace WheelRail
     mean_displacement(const types::material_id material) const;
 
     /**
-     * Add (factor 1) or remove (factor -1) the centrifugal load
-     * m omega^2 (x - c) of a wheel spinning at @p omega about the axle
-     * through @p centre to the external force, for a static solve of the
-     * steadily rolling wheel (it expands by about 30 um at the tread at
-     * 140 km/h; without the load the rolling run starts with that
-     * expansion as a radial vibration that presses the wheel into the rail).
+     * Add the centrifugal load m omega^2 (x - c) of a wheel spinning at
+     * @p omega about the axle through @p centre to the external force, for
+     * a static solve of the steadily rolling wheel (it expands by about
+     * 30 um at the tread at 140 km/h; without the load the rolling run
+     * starts with that expansion as a radial vibration that presses the
+     * wheel into the rail).
      */
     void
-    add_centrifugal_load(const Point<dim> &centre, const double omega, const double factor);
+    add_centrifugal_load(const Point<dim> &centre, const double omega);
+    /** The external force as it was before add_centrifugal_load(), to the
+     *  bit (not the load subtracted again, which rounds). */
+    void
+    remove_centrifugal_load();
 
     /**
      * Initial velocity of steady rolling superposed on the current (static)
@@ -229,6 +234,9 @@ namespace WheelRail
      *  (an external work) goes to @p work. */
     double
     add_runup_damping(const double h, double &work);
+    /** Take the per-node update (NodalUpdate) where the DoFs allow it. */
+    void
+    prepare_nodal_update();
     /** Move the prescribed DoFs to t_{n+1}; adds their reactions' work to
      *  @p work and, with energies, their kinetic energy to @p ke. */
     void
@@ -251,6 +259,11 @@ namespace WheelRail
     VectorType                inv_mass; ///< 0 on constrained and prescribed DoFs
     VectorType                f_ext;    ///< gravity, condensed
     VectorType                u0;       ///< displacement at the start
+    VectorType                f_ext_without_centrifugal;
+    /** The update from per-node mass data where the DoFs allow it; prepared
+     *  at the first step after the loads or masses change. */
+    NodalUpdate nodal_update;
+    bool        nodal_update_prepared = false;
 
     std::vector<PrescribedDof>     prescribed;
     std::unique_ptr<Function<dim>> prescribed_velocity;

@@ -1,0 +1,119 @@
+#include <wheelrail/solver/nodal_update.h>
+
+namespace WheelRail
+{
+  namespace
+  {
+    typedef double    v8d __attribute__((vector_size(64)));
+    typedef long long v8i __attribute__((vector_size(64)));
+
+    inline v8d
+    load(const double *p)
+    {
+      v8d x;
+      __builtin_memcpy(&x, p, sizeof(x));
+      return x;
+    }
+
+    inline void
+    store(double *p, const v8d &x)
+    {
+      __builtin_memcpy(p, &x, sizeof(x));
+    }
+
+    // Eight nodes are 24 DoFs, three vectors: lane j of vector p is the DoF
+    // 8 p + j, of node (8 p + j) / 3 and component (8 p + j) mod 3.
+    constexpr v8i node_of[3] = {{0, 0, 0, 1, 1, 1, 2, 2},
+                                {2, 3, 3, 3, 4, 4, 4, 5},
+                                {5, 5, 6, 6, 6, 7, 7, 7}};
+  } // namespace
+
+
+
+  bool
+  NodalUpdate::prepare(const double            *mass,
+                       const double            *inverse_mass,
+                       const double            *load,
+                       const unsigned char     *component,
+                       const std::vector<bool> &overwritten,
+                       const unsigned int       n_dofs,
+                       const Tensor<1, 3>      &gravity_vector)
+  {
+    is_active = false;
+    node_mass.clear();
+    node_inverse_mass.clear();
+    if (n_dofs % 3 != 0)
+      return false;
+    n_nodes = n_dofs / 3;
+    for (unsigned int c = 0; c < 3; ++c)
+      gravity[c] = gravity_vector[c];
+    node_mass.resize(n_nodes);
+    node_inverse_mass.resize(n_nodes, 0.);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        // the inverse mass of the node's DoFs that are not overwritten
+        bool has_free = false;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const unsigned int i = 3 * k + c;
+            if (component[i] != c || mass[i] != mass[3 * k])
+              return false;
+            if (overwritten[i])
+              continue;
+            // the product as the load was formed: mass times gravity
+            const double g = mass[i] * gravity[c];
+            if (load[i] != g)
+              return false;
+            if (has_free && inverse_mass[i] != node_inverse_mass[k])
+              return false;
+            node_inverse_mass[k] = inverse_mass[i];
+            has_free             = true;
+          }
+        node_mass[k] = mass[3 * k];
+      }
+    is_active = true;
+    return true;
+  }
+
+
+
+  void
+  NodalUpdate::apply(const double h, const double dt, double *U, double *V, double *F) const
+  {
+    v8d g_lanes[3];
+    for (unsigned int p = 0; p < 3; ++p)
+      for (unsigned int j = 0; j < 8; ++j)
+        g_lanes[p][j] = gravity[(8 * p + j) % 3];
+
+    unsigned int k = 0;
+    for (; k + 8 <= n_nodes; k += 8)
+      {
+        const v8d m = load(&node_mass[k]), w = load(&node_inverse_mass[k]);
+#pragma GCC unroll 3
+        for (unsigned int p = 0; p < 3; ++p)
+          {
+            const std::size_t i = 3 * std::size_t(k) + 8 * p;
+            // the load rounded to a double before f is subtracted, as the
+            // stored one was (no contraction into an FMA)
+            v8d g = __builtin_shuffle(m, node_of[p]) * g_lanes[p];
+            asm("" : "+m"(g));
+            const v8d w_p = __builtin_shuffle(w, node_of[p]);
+            v8d       v   = load(V + i);
+            v += h * w_p * (g - load(F + i));
+            store(V + i, v);
+            store(U + i, load(U + i) + dt * v);
+            store(F + i, v8d{});
+          }
+      }
+    for (; k < n_nodes; ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          const std::size_t i = 3 * std::size_t(k) + c;
+          double            g = node_mass[k] * gravity[c];
+          asm("" : "+m"(g));
+          V[i] += h * node_inverse_mass[k] * (g - F[i]);
+          U[i] += dt * V[i];
+          F[i] = 0;
+        }
+  }
+} // namespace WheelRail
