@@ -226,15 +226,7 @@ namespace WheelRail
     if (energies == nullptr && nodal_update.active())
       nodal_update.apply(h, dt, U, V, F);
     else if (energies == nullptr)
-      {
-#pragma omp simd
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            V[i] += h * IM[i] * (G[i] - F[i]);
-            U[i] += dt * V[i];
-            F[i] = 0;
-          }
-      }
+      NodalUpdate::apply_per_dof(h, dt, IM, G, n, U, V, F);
     else
       {
         for (unsigned int i = 0; i < n; ++i)

@@ -78,6 +78,27 @@ namespace WheelRail
 
 
   void
+  NodalUpdate::apply_per_dof(const double       h,
+                             const double       dt,
+                             const double      *W,
+                             const double      *G,
+                             const unsigned int n_dofs,
+                             double            *U,
+                             double            *V,
+                             double            *F)
+  {
+#pragma omp simd
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        V[i] += h * W[i] * (G[i] - F[i]);
+        U[i] += dt * V[i];
+        F[i] = 0;
+      }
+  }
+
+
+
+  void
   NodalUpdate::apply(const double h, const double dt, double *U, double *V, double *F) const
   {
     v8d g_lanes[3];

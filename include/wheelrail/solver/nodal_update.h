@@ -57,6 +57,17 @@ namespace WheelRail
     void
     apply(const double h, const double dt, double *U, double *V, double *F) const;
 
+    /** The same update from per-DoF inverse mass @p W and load @p G. */
+    static void
+    apply_per_dof(const double       h,
+                  const double       dt,
+                  const double      *W,
+                  const double      *G,
+                  const unsigned int n_dofs,
+                  double            *U,
+                  double            *V,
+                  double            *F);
+
   private:
     bool                is_active = false;
     unsigned int        n_nodes   = 0;
