@@ -1,25 +1,14 @@
+#include <wheelrail/solver/element_kernel.h>
 #include <wheelrail/solver/nodal_update.h>
 
 namespace WheelRail
 {
   namespace
   {
-    typedef double    v8d __attribute__((vector_size(64)));
+    using ElementKernel::load;
+    using ElementKernel::store;
+    using ElementKernel::v8d;
     typedef long long v8i __attribute__((vector_size(64)));
-
-    inline v8d
-    load(const double *p)
-    {
-      v8d x;
-      __builtin_memcpy(&x, p, sizeof(x));
-      return x;
-    }
-
-    inline void
-    store(double *p, const v8d &x)
-    {
-      __builtin_memcpy(p, &x, sizeof(x));
-    }
 
     // Eight nodes are 24 DoFs, three vectors: lane j of vector p is the DoF
     // 8 p + j, of node (8 p + j) / 3 and component (8 p + j) mod 3.
