@@ -221,12 +221,15 @@ namespace WheelRail
     const double      *M  = mass.begin();
     const unsigned int n  = u.locally_owned_size();
     double             ke = 0;
-    if (energies == nullptr && !nodal_update_prepared)
-      prepare_nodal_update();
-    if (energies == nullptr && nodal_update.active())
-      nodal_update.apply(h, dt, U, V, F);
-    else if (energies == nullptr)
-      NodalUpdate::apply_per_dof(h, dt, IM, G, n, U, V, F);
+    if (energies == nullptr)
+      {
+        if (!nodal_update_prepared)
+          prepare_nodal_update();
+        if (nodal_update.active())
+          nodal_update.apply(h, dt, U, V, F);
+        else
+          NodalUpdate::apply_per_dof(h, dt, IM, G, n, U, V, F);
+      }
     else
       {
         for (unsigned int i = 0; i < n; ++i)

@@ -259,7 +259,8 @@ namespace WheelRail
     VectorType                inv_mass; ///< 0 on constrained and prescribed DoFs
     VectorType                f_ext;    ///< gravity, condensed
     VectorType                u0;       ///< displacement at the start
-    VectorType                f_ext_without_centrifugal;
+    /** f_ext while a static start adds the centrifugal load to it */
+    VectorType f_ext_without_centrifugal;
     /** The update from per-node mass data where the DoFs allow it; prepared
      *  at the first step after the loads or masses change. */
     NodalUpdate nodal_update;
