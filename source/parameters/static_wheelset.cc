@@ -48,10 +48,13 @@ namespace WheelRail
                       Patterns::Bool(),
                       "Solve each Newton step only as accurately as the next "
                       "iterate can use (Eisenstat-Walker): CG stops at the "
-                      "relative residual 0.5 x Newton tolerance x load / "
-                      "Newton residual, kept within [Linear solver tolerance, "
-                      "1e-2]. The converged state meets the same Newton "
-                      "tolerance with fewer CG iterations; false: every step "
+                      "larger of the relative residuals 0.5 x Newton "
+                      "tolerance x load / Newton residual and 0.9 x (Newton "
+                      "residual / the one before)^2 (1e-2 at the first step "
+                      "of each axle position), kept within [Linear solver "
+                      "tolerance, 1e-2]. The converged state meets the same "
+                      "Newton tolerance with fewer CG iterations and "
+                      "possibly more Newton iterations; false: every step "
                       "to Linear solver tolerance.");
     prm.declare_entry("AMG near null space",
                       "translations",

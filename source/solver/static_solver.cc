@@ -322,7 +322,10 @@ namespace WheelRail
                  fmt(parameters.statics.linear_tolerance) +
                  " (or the contact set switches between iterations)." :
                "The residual still falls: raise Max Newton iterations.")));
-        previous_norm = norm;
+        // the residual's reduction by the last step (Eisenstat & Walker's
+        // forcing term, below)
+        const double reduction = it == 0 ? 1. : norm / previous_norm;
+        previous_norm          = norm;
         ++result.newton_iterations;
 
         tangent.set_contact_pairs(contact.active_pairs(), constraints, owned);
@@ -335,15 +338,25 @@ namespace WheelRail
 
         // Inexact Newton (Eisenstat & Walker 1996): CG has to bring the
         // linear residual only to half the Newton tolerance, i.e. relative
-        // 0.5 tol / |r|, which the next iterate can use; while |r| is large
-        // at most 1e-2, so that the step's error stays below what Newton's
+        // 0.5 tol / |r|, which the next iterate can use; and not much below
+        // what the nonlinearity leaves of the step, relative 0.9 (|r| /
+        // |r_previous|)^2 (their choice 2), while the contact set or the
+        // axle's position still moves the residual (and at the first step
+        // of each axle position, which is the bore's prescribed motion).
+        // At most 1e-2, so that the step's error stays below what Newton's
         // quadratic term leaves (Linear solver tolerance <= 1e-2 by its
         // range).
         double eta = parameters.statics.linear_tolerance;
         if (parameters.statics.inexact_newton)
-          eta = std::clamp(0.5 * parameters.statics.newton_tolerance * load_scale / norm,
-                           parameters.statics.linear_tolerance,
-                           1e-2);
+          {
+            const double eta_max = 1e-2;
+            const double forcing = it == 0 ? eta_max : 0.9 * reduction * reduction;
+            eta =
+              std::clamp(std::max(forcing,
+                                  0.5 * parameters.statics.newton_tolerance * load_scale / norm),
+                         parameters.statics.linear_tolerance,
+                         eta_max);
+          }
         SolverControl                           control(5000, eta * rhs.l2_norm());
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         try
