@@ -130,7 +130,7 @@ namespace WheelRail
                          block_size);
         const unsigned int family = batch_family[batch];
         if (batch + node_prefetch_distance < n_batches)
-          prefetch_family(batch_family[batch + node_prefetch_distance], U, V, F, with_damping);
+          prefetch_nodes(batch + node_prefetch_distance, U, V, F, with_damping);
         if (batch + 1 < n_batches)
           gather(batch + 1, slot ^ 1);
         const double *u_batch = ub, *v_batch = vb;
@@ -209,25 +209,29 @@ namespace WheelRail
 
 
   void
-  ElasticOperator::prefetch_family(const unsigned int family,
-                                   const double      *U,
-                                   const double      *V,
-                                   const double      *F,
-                                   const bool         with_damping) const
+  ElasticOperator::prefetch_nodes(const unsigned int batch,
+                                  const double      *U,
+                                  const double      *V,
+                                  const double      *F,
+                                  const bool         with_damping) const
   {
-    // The 27 grid nodes of a family lie far apart in the DoF numbering, and
-    // their u, v, f come from beyond the L2 cache: the gathers of the loop
-    // waited on them (perf). Requested node_prefetch_distance batches ahead
-    // (one line per node and vector; f for writing) they are there in time.
-    if (family == numbers::invalid_unsigned_int)
-      return;
-    const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
-    for (unsigned int n = 0; n < 27; ++n)
+    // The nodes of a batch lie far apart in the DoF numbering, and their u,
+    // v, f come from beyond the L2 cache: the gathers of the loop waited on
+    // them (perf). Requested node_prefetch_distance batches ahead (one line
+    // per node and vector; f for writing) they are there in time: a
+    // family's 27 grid nodes, or the 8 W vertices of a batch of other cells
+    // (with shared vertices requested more than once).
+    const unsigned int  family = batch_family[batch];
+    const bool          grid   = family != numbers::invalid_unsigned_int;
+    const unsigned int *nodes =
+      grid ? &family_nodes[std::size_t(family) * 27] : &batch_nodes[std::size_t(batch) * 8 * W];
+    const unsigned int n_nodes = grid ? 27 : 8 * W;
+    for (unsigned int n = 0; n < n_nodes; ++n)
       {
-        __builtin_prefetch(U + grid[n], 0, 3);
+        __builtin_prefetch(U + nodes[n], 0, 3);
         if (with_damping)
-          __builtin_prefetch(V + grid[n], 0, 3);
-        __builtin_prefetch(F + grid[n], 1, 3);
+          __builtin_prefetch(V + nodes[n], 0, 3);
+        __builtin_prefetch(F + nodes[n], 1, 3);
       }
   }
 

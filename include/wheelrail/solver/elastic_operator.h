@@ -287,16 +287,16 @@ namespace WheelRail
      *  (bench of 2026-11-25, doc/performance.md: 4 or 6 batches are within
      *  the noise of 2, none requested is 60 % slower). */
     static constexpr unsigned int prefetch_distance = 2;
-    /** Request u, v (with damping) and f of the 27 grid nodes of @p family
-     *  (none if it is numbers::invalid_unsigned_int) into the cache. */
+    /** Request u, v (with damping) and f of the nodes of @p batch into the
+     *  cache: a family's 27 grid nodes, or the 8 W vertices of other cells. */
     void
-    prefetch_family(const unsigned int family,
-                    const double      *U,
-                    const double      *V,
-                    const double      *F,
-                    const bool         with_damping) const;
+    prefetch_nodes(const unsigned int batch,
+                   const double      *U,
+                   const double      *V,
+                   const double      *F,
+                   const bool         with_damping) const;
     /** Batches ahead of the one computed whose nodal values
-     *  prefetch_family() requests (doc/performance.md, 2026-11-26). */
+     *  prefetch_nodes() requests (doc/performance.md, 2026-11-26). */
     static constexpr unsigned int node_prefetch_distance = 4;
 
     FESystem<dim>             fe;
