@@ -56,10 +56,9 @@ namespace WheelRail
                       "misses the target by more than Load tolerance is "
                       "solved only until the residual is a tenth of the miss "
                       "(the next position needs no more). The converged state "
-                      "meets the same "
-                      "Newton tolerance with fewer CG iterations and "
-                      "possibly more Newton iterations; false: every step "
-                      "to Linear solver tolerance.");
+                      "meets the same Newton tolerance with fewer CG "
+                      "iterations and possibly more Newton iterations; "
+                      "false: every step to Linear solver tolerance.");
     prm.declare_entry("AMG near null space",
                       "translations",
                       Patterns::Selection("translations|rigid body modes"),

@@ -301,7 +301,9 @@ namespace WheelRail
         // An axle position whose force misses the target (by more than the
         // load tolerance) is a step of the secant iteration on the force:
         // its force needs to be known to a tenth of the miss, not to the
-        // Newton tolerance (the residual bounds the force's error).
+        // Newton tolerance. The residual, the out-of-balance force, stands
+        // for the error of the contact force (of its order where the
+        // contact carries the load).
         const double miss = std::abs(force - target_load);
         if (parameters.statics.inexact_newton &&
             miss > parameters.statics.load_tolerance * target_load && norm <= 0.1 * miss)
