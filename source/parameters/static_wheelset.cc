@@ -52,13 +52,10 @@ namespace WheelRail
                       "tolerance x load / Newton residual and 0.9 x (Newton "
                       "residual / the one before)^2 (1e-2 at the first step "
                       "of each axle position), kept within [Linear solver "
-                      "tolerance, 1e-2]; an axle position whose contact force "
-                      "misses the target by more than Load tolerance is "
-                      "solved only until the residual is a tenth of the miss "
-                      "(the next position needs no more). The converged state "
-                      "meets the same Newton tolerance with fewer CG "
-                      "iterations and possibly more Newton iterations; "
-                      "false: every step to Linear solver tolerance.");
+                      "tolerance, 1e-2]. The converged state meets the same "
+                      "Newton tolerance with fewer CG iterations and "
+                      "possibly more Newton iterations; false: every step "
+                      "to Linear solver tolerance.");
     prm.declare_entry("AMG near null space",
                       "translations",
                       Patterns::Selection("translations|rigid body modes"),

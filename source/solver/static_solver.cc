@@ -253,10 +253,7 @@ namespace WheelRail
 
 
   double
-  StaticContactSolver::solve_at(const double  delta,
-                                const double  target_load,
-                                StaticResult &result,
-                                std::ostream &log)
+  StaticContactSolver::solve_at(const double delta, StaticResult &result, std::ostream &log)
   {
     const auto     &part  = *solver.partitioner();
     const IndexSet &owned = solver.get_dof_handler().locally_owned_dofs();
@@ -298,21 +295,6 @@ namespace WheelRail
             << force * 1e-3 << " kN" << std::endl;
         if (norm <= parameters.statics.newton_tolerance * load_scale)
           return force;
-        // An axle position whose force misses the target (by more than the
-        // load tolerance) is a step of the secant iteration on the force:
-        // its force needs to be known to a tenth of the miss, not to the
-        // Newton tolerance. The residual, the out-of-balance force, stands
-        // for the error of the contact force (of its order where the
-        // contact carries the load).
-        const double miss = std::abs(force - target_load);
-        if (parameters.statics.inexact_newton &&
-            miss > parameters.statics.load_tolerance * target_load && norm <= 0.1 * miss)
-          {
-            log << "    (force " << std::setprecision(3) << miss / target_load
-                << " of the load from the target: accepted at this residual)"
-                << std::setprecision(6) << std::endl;
-            return force;
-          }
         // A node projecting onto a face edge or corner makes the contact
         // force non-smooth; Newton then stalls at a tiny residual. Accept a
         // stalled iteration below 10 x the tolerance.
@@ -445,7 +427,7 @@ namespace WheelRail
           u.local_element(i) = -gap;
     log << "Static contact solve for a wheel load of " << target * 1e-3 << " kN" << std::endl;
     log << "  axle displacement " << d0 * 1e6 << " um" << std::endl;
-    double F0 = solve_at(d0, target, result, log);
+    double F0 = solve_at(d0, result, log);
     ++result.load_iterations;
     double d1 = F0 > 0 ? gap + (d0 - gap) * std::pow(target / F0, 2. / 3.) : gap + 2 * approach;
     double F1 = F0;
@@ -459,7 +441,7 @@ namespace WheelRail
     while (true)
       {
         log << "  axle displacement " << d1 * 1e6 << " um" << std::endl;
-        F1 = solve_at(d1, target, result, log);
+        F1 = solve_at(d1, result, log);
         ++result.load_iterations;
         if (std::abs(F1 - target) <= parameters.statics.load_tolerance * target)
           break;

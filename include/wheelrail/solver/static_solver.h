@@ -91,13 +91,9 @@ namespace WheelRail
     solve(const double target_load, std::ostream &log);
 
   private:
-    /** Newton at a fixed bore displacement; returns the contact force. With
-     *  Static solve/Inexact Newton, a position whose force misses
-     *  @p target_load by more than the load tolerance is solved only until
-     *  the residual is a tenth of that miss: the next axle position needs
-     *  its force no more accurately. */
+    /** Newton at a fixed bore displacement; returns the contact force. */
     double
-    solve_at(const double delta, const double target_load, StaticResult &result, std::ostream &log);
+    solve_at(const double delta, StaticResult &result, std::ostream &log);
 
     /** The six rigid-body modes (translations, rotations about the
      *  coordinate axes) on the locally owned rows of @p matrix, for the
