@@ -12,8 +12,9 @@
 #   within 0.05;
 # - the metadata: the static wheel load (14,300 kg x 9.81 m/s^2), the radii,
 #   the law.
-# Measured (2026-11-25): F_x / F_N -1.5 % and -0.8 % from the half-space,
-# slip area 0.287 / 0.254 and 0.598 / 0.594.
+# Measured at ee8f93a (2026-11-27): F_x / F_N -1.5 % and -0.8 % from the
+# half-space, slip area 0.287 / 0.254 and 0.605 / 0.594 (0.598 / 0.594 on
+# 2026-11-25).
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exe=$1 src=$2
