@@ -13,6 +13,7 @@
 
 #include <wheelrail/solver/elastic_operator.h>
 #include <wheelrail/solver/element_kernel.h>
+#include <wheelrail/solver/family_batch.h>
 
 #include <algorithm>
 #include <cstring>

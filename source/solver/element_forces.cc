@@ -10,6 +10,7 @@
 
 #include <wheelrail/solver/elastic_operator.h>
 #include <wheelrail/solver/element_kernel.h>
+#include <wheelrail/solver/family_batch.h>
 #include <wheelrail/solver/st_venant_kirchhoff.h>
 
 #include <algorithm>

@@ -2,9 +2,9 @@
  * @file element_kernel.h
  * The one-point hexahedron of SPEC 2 on batches of W cells: the layout of
  * the per-cell element data (Field), the Flanagan-Belytschko hourglass base
- * vectors, the vectorised force kernel (total-Lagrangian St. Venant-Kirchhoff
- * stress, element stiffness damping, stiffness hourglass control) and the
- * gather/scatter of families (the 8 children of one parent in one batch).
+ * vectors and the vectorised force kernel (total-Lagrangian St. Venant-Kirchhoff
+ * stress, element stiffness damping, stiffness hourglass control). The
+ * gather and scatter of families are in family_batch.h.
  *
  * Included only by the solver's translation units compiled with -O3 (see
  * CMakeLists.txt); the functions are forced inline so that the kernel is
@@ -182,144 +182,6 @@ namespace WheelRail
         return load(data + SingleField::beta);
       }
     };
-
-    /**
-     * Families: when a batch holds the 8 children of one parent in child
-     * order, vertex a of lane (child) l is node family_offset[a] +
-     * family_offset[l] of the parent's 3x3x3 grid (lexicographic vertex and
-     * child numbering of deal.II), 27 distinct nodes instead of 64.
-     */
-    constexpr unsigned int family_offset[8] = {0, 1, 3, 4, 9, 10, 12, 13};
-    typedef long long      v8i __attribute__((vector_size(64)));
-    /** Lane l of the vector of vertex a over the children: grid node
-     *  family_offset[a] + family_offset[l], i.e. element family_offset[l] of
-     *  the 16 grid values from family_offset[a] on. */
-    constexpr v8i family_lanes = {family_offset[0],
-                                  family_offset[1],
-                                  family_offset[2],
-                                  family_offset[3],
-                                  family_offset[4],
-                                  family_offset[5],
-                                  family_offset[6],
-                                  family_offset[7]};
-
-    typedef double v4d __attribute__((vector_size(32)));
-
-    /** The nodal values of a family's 27 grid nodes @p grid (x-DoF
-     *  indices into @p X, node-blocked) per component, @p g[d][n]: each
-     *  node's x, y, z (and one value beyond, unused) by one 4-wide load,
-     *  eight nodes transposed by permutations (lanes 27-31 repeat node 26).
-     *  The values are moved, not combined: the same bits as scalar copies.
-     *  Every node needs idx + 4 <= the vector's size. */
-    WHEELRAIL_ALWAYS_INLINE void
-    gather_family_grid(const double *X, const unsigned int *grid, double (&g)[3][32])
-    {
-#pragma GCC unroll 4
-      for (unsigned int q = 0; q < 4; ++q)
-        {
-          v4d node[8];
-#pragma GCC unroll 8
-          for (unsigned int k = 0; k < 8; ++k)
-            __builtin_memcpy(&node[k], X + grid[std::min(8 * q + k, 26u)], sizeof(v4d));
-          // pairs of nodes, then x and y of four nodes, z of four nodes
-          const v8d n01 = __builtin_shufflevector(node[0], node[1], 0, 1, 2, 3, 4, 5, 6, 7);
-          const v8d n23 = __builtin_shufflevector(node[2], node[3], 0, 1, 2, 3, 4, 5, 6, 7);
-          const v8d n45 = __builtin_shufflevector(node[4], node[5], 0, 1, 2, 3, 4, 5, 6, 7);
-          const v8d n67 = __builtin_shufflevector(node[6], node[7], 0, 1, 2, 3, 4, 5, 6, 7);
-          const v8d xy0 = __builtin_shufflevector(n01, n23, 0, 4, 8, 12, 1, 5, 9, 13);
-          const v8d xy1 = __builtin_shufflevector(n45, n67, 0, 4, 8, 12, 1, 5, 9, 13);
-          const v8d z0  = __builtin_shufflevector(n01, n23, 2, 6, 10, 14, 2, 6, 10, 14);
-          const v8d z1  = __builtin_shufflevector(n45, n67, 2, 6, 10, 14, 2, 6, 10, 14);
-          store(&g[0][8 * q], __builtin_shufflevector(xy0, xy1, 0, 1, 2, 3, 8, 9, 10, 11));
-          store(&g[1][8 * q], __builtin_shufflevector(xy0, xy1, 4, 5, 6, 7, 12, 13, 14, 15));
-          store(&g[2][8 * q], __builtin_shufflevector(z0, z1, 0, 1, 2, 3, 8, 9, 10, 11));
-        }
-    }
-
-    /** The family scatter in vector form: for vertex a, which lanes
-     *  (children) of its force vector reach the grid nodes 8 r .. 8 r + 7
-     *  (lane index, or W for none: a lane of a zero vector). */
-    struct FamilyVectorScatter
-    {
-      long long lane[8][4][W];
-      bool      hit[8][4];
-      constexpr FamilyVectorScatter()
-        : lane{}
-        , hit{}
-      {
-        for (unsigned int a = 0; a < 8; ++a)
-          for (unsigned int r = 0; r < 4; ++r)
-            for (unsigned int i = 0; i < W; ++i)
-              {
-                lane[a][r][i] = W;
-                for (unsigned int l = 0; l < W; ++l)
-                  if (family_offset[a] + family_offset[l] == 8 * r + i)
-                    {
-                      lane[a][r][i] = l;
-                      hit[a][r]     = true;
-                    }
-              }
-      }
-    };
-    inline constexpr FamilyVectorScatter family_vector_scatter{};
-
-    /** Adds vertex @p a's forces @p f (over the children) to the grid sums
-     *  @p sums (27 grid nodes in 4 vectors), by one permutation per vector
-     *  that it reaches. */
-    template <unsigned int a, unsigned int... r>
-    WHEELRAIL_ALWAYS_INLINE void
-    add_vertex_to_grid(const v8d &f, v8d (&sums)[4], std::integer_sequence<unsigned int, r...>)
-    {
-      (
-        [&] {
-          if constexpr (family_vector_scatter.hit[a][r])
-            {
-              constexpr v8i lanes = {family_vector_scatter.lane[a][r][0],
-                                     family_vector_scatter.lane[a][r][1],
-                                     family_vector_scatter.lane[a][r][2],
-                                     family_vector_scatter.lane[a][r][3],
-                                     family_vector_scatter.lane[a][r][4],
-                                     family_vector_scatter.lane[a][r][5],
-                                     family_vector_scatter.lane[a][r][6],
-                                     family_vector_scatter.lane[a][r][7]};
-              sums[r] += __builtin_shuffle(f, v8d{}, lanes);
-            }
-        }(),
-        ...);
-    }
-
-    /** The family scatter: the batch forces @p fb summed per grid node
-     *  in vector registers (terms in ascending vertex order), then each
-     *  grid node's three sums added to F. */
-    template <unsigned int... a>
-    WHEELRAIL_ALWAYS_INLINE void
-    scatter_family(double             *F,
-                   const unsigned int *grid,
-                   const double *__restrict fb,
-                   std::integer_sequence<unsigned int, a...>)
-    {
-      alignas(64) double grid_sums[3][32];
-#pragma GCC unroll 3
-      for (unsigned int d = 0; d < 3; ++d)
-        {
-          v8d sums[4] = {};
-          (add_vertex_to_grid<a>(load(fb + (a * 3 + d) * W),
-                                 sums,
-                                 std::make_integer_sequence<unsigned int, 4>{}),
-           ...);
-#pragma GCC unroll 4
-          for (unsigned int r = 0; r < 4; ++r)
-            store(&grid_sums[d][8 * r], sums[r]);
-        }
-#pragma GCC unroll 27
-      for (unsigned int n = 0; n < 27; ++n)
-        {
-          const unsigned int idx = grid[n];
-          F[idx] += grid_sums[0][n];
-          F[idx + 1] += grid_sums[1][n];
-          F[idx + 2] += grid_sums[2][n];
-        }
-    }
 
     /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
      *  of a batch: H from the displacements, L from the velocities. */
