@@ -76,8 +76,8 @@ namespace WheelRail
     std::fill(std::begin(vb), std::end(vb), 0.);
     for (auto &slot : v_gathered)
       std::fill(std::begin(slot), std::end(slot), 0.);
-    // a family's grid values per component, padded: the permutations read
-    // 16 values from any vertex's offset (at most 13 + 15 = 28)
+    // a family's grid values per component, padded to 4 aligned vectors
+    // (expand_family() reads them whole; the gather repeats node 26)
     alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
     const auto         gather = [&](const unsigned int batch, const unsigned int slot) {
       const unsigned int family = batch_family[batch];
@@ -137,22 +137,11 @@ namespace WheelRail
         const double *u_batch = ub, *v_batch = vb;
         if (family != numbers::invalid_unsigned_int)
           {
-            // each vertex's vector over the children by one two-source
-            // permutation of the grid values
-            for (unsigned int a = 0; a < 8; ++a)
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  const unsigned int o = family_offset[a];
-                  store(&ub[(a * 3 + d) * W],
-                        __builtin_shuffle(ElementKernel::load(&ug[slot][d][o]),
-                                          ElementKernel::load(&ug[slot][d][o + W]),
-                                          family_lanes));
-                  if (with_damping)
-                    store(&vb[(a * 3 + d) * W],
-                          __builtin_shuffle(ElementKernel::load(&vg[slot][d][o]),
-                                            ElementKernel::load(&vg[slot][d][o + W]),
-                                            family_lanes));
-                }
+            // each vertex's vector over the children by permutations of
+            // the aligned grid vectors
+            expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
+            if (with_damping)
+              expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
           }
         else
           {

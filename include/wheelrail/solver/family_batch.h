@@ -29,17 +29,83 @@ namespace WheelRail
      */
     constexpr unsigned int family_offset[8] = {0, 1, 3, 4, 9, 10, 12, 13};
     typedef long long      v8i __attribute__((vector_size(64)));
-    /** Lane l of the vector of vertex a over the children: grid node
-     *  family_offset[a] + family_offset[l], i.e. element family_offset[l] of
-     *  the 16 grid values from family_offset[a] on. */
-    constexpr v8i family_lanes = {family_offset[0],
-                                  family_offset[1],
-                                  family_offset[2],
-                                  family_offset[3],
-                                  family_offset[4],
-                                  family_offset[5],
-                                  family_offset[6],
-                                  family_offset[7]};
+
+    /** The permutations that expand_family() applies: vertex a's vector
+     *  takes lane l from grid value family_offset[a] + family_offset[l];
+     *  first from the two grid vectors from `first` on (lanes below 16),
+     *  then, where `second`, the lanes beyond them from the vector after. */
+    struct FamilyExpansion
+    {
+      unsigned int first[8];
+      long long    lane[8][W];
+      bool         second[8];
+      long long    lane2[8][W];
+      constexpr FamilyExpansion()
+        : first{}
+        , lane{}
+        , second{}
+        , lane2{}
+      {
+        for (unsigned int a = 0; a < 8; ++a)
+          {
+            first[a] = family_offset[a] / W;
+            for (unsigned int l = 0; l < W; ++l)
+              {
+                const unsigned int i = family_offset[a] + family_offset[l] - W * first[a];
+                lane[a][l]           = i < 2 * W ? i : 0;
+                lane2[a][l]          = i < 2 * W ? l : W + i - 2 * W;
+                if (i >= 2 * W)
+                  second[a] = true;
+              }
+          }
+      }
+    };
+    inline constexpr FamilyExpansion family_expansion{};
+
+    /** Vertex @p a's vector over the children of the grid component @p g
+     *  (32 values, 4 aligned vectors): one or two permutations of aligned
+     *  grid vectors, the values moved, not combined. */
+    template <unsigned int a>
+    WHEELRAIL_ALWAYS_INLINE v8d
+    expand_vertex(const double *g)
+    {
+      constexpr FamilyExpansion e = family_expansion;
+      constexpr unsigned int    q = e.first[a];
+      constexpr v8i             lanes{e.lane[a][0],
+                          e.lane[a][1],
+                          e.lane[a][2],
+                          e.lane[a][3],
+                          e.lane[a][4],
+                          e.lane[a][5],
+                          e.lane[a][6],
+                          e.lane[a][7]};
+      const v8d r = __builtin_shuffle(load(g + q * W), load(g + (q + 1) * W), lanes);
+      if constexpr (e.second[a])
+        {
+          constexpr v8i lanes2{e.lane2[a][0],
+                               e.lane2[a][1],
+                               e.lane2[a][2],
+                               e.lane2[a][3],
+                               e.lane2[a][4],
+                               e.lane2[a][5],
+                               e.lane2[a][6],
+                               e.lane2[a][7]};
+          return __builtin_shuffle(r, load(g + (q + 2) * W), lanes2);
+        }
+      else
+        return r;
+    }
+
+    /** A family's vertex vectors @p wb ([vertex][component][lane]) from its
+     *  grid values @p g ([component][32], aligned). */
+    template <unsigned int... a>
+    WHEELRAIL_ALWAYS_INLINE void
+    expand_family(const double (&g)[3][32], double *wb, std::integer_sequence<unsigned int, a...>)
+    {
+#pragma GCC unroll 3
+      for (unsigned int d = 0; d < 3; ++d)
+        (store(wb + (a * 3 + d) * W, expand_vertex<a>(g[d])), ...);
+    }
 
     typedef double v4d __attribute__((vector_size(32)));
 
