@@ -30,6 +30,13 @@ namespace WheelRail
     constexpr unsigned int family_offset[8] = {0, 1, 3, 4, 9, 10, 12, 13};
     typedef long long      v8i __attribute__((vector_size(64)));
 
+    /** W lane indices as the index vector of a permutation. */
+    constexpr v8i
+    lane_vector(const long long (&l)[W])
+    {
+      return v8i{l[0], l[1], l[2], l[3], l[4], l[5], l[6], l[7]};
+    }
+
     /** The permutations that expand_family() applies: vertex a's vector
      *  takes lane l from grid value family_offset[a] + family_offset[l];
      *  first from the two grid vectors from `first` on (lanes below 16),
@@ -69,27 +76,13 @@ namespace WheelRail
     WHEELRAIL_ALWAYS_INLINE v8d
     expand_vertex(const double *g)
     {
-      constexpr FamilyExpansion e = family_expansion;
-      constexpr unsigned int    q = e.first[a];
-      constexpr v8i             lanes{e.lane[a][0],
-                          e.lane[a][1],
-                          e.lane[a][2],
-                          e.lane[a][3],
-                          e.lane[a][4],
-                          e.lane[a][5],
-                          e.lane[a][6],
-                          e.lane[a][7]};
+      constexpr FamilyExpansion e     = family_expansion;
+      constexpr unsigned int    q     = e.first[a];
+      constexpr v8i             lanes = lane_vector(e.lane[a]);
       const v8d r = __builtin_shuffle(load(g + q * W), load(g + (q + 1) * W), lanes);
       if constexpr (e.second[a])
         {
-          constexpr v8i lanes2{e.lane2[a][0],
-                               e.lane2[a][1],
-                               e.lane2[a][2],
-                               e.lane2[a][3],
-                               e.lane2[a][4],
-                               e.lane2[a][5],
-                               e.lane2[a][6],
-                               e.lane2[a][7]};
+          constexpr v8i lanes2 = lane_vector(e.lane2[a]);
           return __builtin_shuffle(r, load(g + (q + 2) * W), lanes2);
         }
       else
@@ -178,14 +171,7 @@ namespace WheelRail
         [&] {
           if constexpr (family_vector_scatter.hit[a][r])
             {
-              constexpr v8i lanes = {family_vector_scatter.lane[a][r][0],
-                                     family_vector_scatter.lane[a][r][1],
-                                     family_vector_scatter.lane[a][r][2],
-                                     family_vector_scatter.lane[a][r][3],
-                                     family_vector_scatter.lane[a][r][4],
-                                     family_vector_scatter.lane[a][r][5],
-                                     family_vector_scatter.lane[a][r][6],
-                                     family_vector_scatter.lane[a][r][7]};
+              constexpr v8i lanes = lane_vector(family_vector_scatter.lane[a][r]);
               sums[r] += __builtin_shuffle(f, v8d{}, lanes);
             }
         }(),
