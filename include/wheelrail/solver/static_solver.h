@@ -74,7 +74,9 @@ namespace WheelRail
    * by delta (all other conditions as in the explicit run: fixed rail
    * bottom, rail ends fixed in x) and delta is found by secant iterations on
    * F^(2/3) (nearly linear for a Hertzian contact) so that the contact force
-   * equals the target load. The contact is frictionless here. The residuals
+   * equals the target load; Newton at each new delta starts from the line
+   * through the last two converged states where delta goes on in the same
+   * direction. The contact is frictionless here. The residuals
    * are those of the ExplicitSolver at the iterate (its operator, external
    * force and contact); the solution is left in its displacement, ready for
    * an explicit run.
