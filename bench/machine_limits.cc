@@ -1,7 +1,8 @@
 // The two limits of this machine that bound the explicit step, measured the
 // way the element loop would see them:
-//   - the floating-point peak: independent chains of 8-lane fused
-//     multiply-adds (the kernel's vector type), per core and on all cores;
+//   - the floating-point peak: independent chains of fused multiply-adds on
+//     the widest vector the registers hold (8 lanes with AVX-512, 4 with
+//     AVX2, 2 with SSE2, as the element kernel), per core and on all cores;
 //   - the memory bandwidth: the STREAM triad a[i] = b[i] + s c[i] over arrays
 //     far larger than the caches (24 bytes counted per element, as STREAM
 //     does), per core and on all cores.
@@ -20,7 +21,20 @@
 
 namespace
 {
-  typedef double v8d __attribute__((vector_size(64)));
+  // the chains' vector and their number: as many as the 16 (32 with
+  // AVX-512) registers hold next to a and b; a wider vector than the
+  // registers would be split by the compiler and its chains kept in memory
+#if defined(__AVX512F__)
+  typedef double         vec __attribute__((vector_size(64)));
+  constexpr unsigned int n_chains = 24;
+#elif defined(__AVX__)
+  typedef double         vec __attribute__((vector_size(32)));
+  constexpr unsigned int n_chains = 12;
+#else
+  typedef double         vec __attribute__((vector_size(16)));
+  constexpr unsigned int n_chains = 12;
+#endif
+  constexpr unsigned int lanes = sizeof(vec) / sizeof(double);
 
   double
   seconds_since(const std::chrono::steady_clock::time_point &start)
@@ -28,40 +42,46 @@ namespace
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
 
-  // n_iter times 24 independent FMA chains of 8 lanes: 2 * 8 * 24 flops each
-  constexpr unsigned int n_chains = 24;
+  // n_iter times 24 independent FMA chains (the first n_chains of them
+  // run): 2 * lanes * n_chains flops each
 
   double
   fma_chains(const long n_iter, const double seed)
   {
-    v8d acc[n_chains];
-    for (unsigned int c = 0; c < n_chains; ++c)
-      for (unsigned int l = 0; l < 8; ++l)
+    vec acc[24], a, b;
+    for (unsigned int c = 0; c < 24; ++c)
+      for (unsigned int l = 0; l < lanes; ++l)
         acc[c][l] = seed + 1e-3 * (c * 8 + l);
-    const v8d a = {0.999999, 0.999998, 0.999997, 0.999996, 0.999995, 0.999994, 0.999993, 0.999992};
-    const v8d b = {1e-7, 2e-7, 3e-7, 4e-7, 5e-7, 6e-7, 7e-7, 8e-7};
+    for (unsigned int l = 0; l < lanes; ++l)
+      {
+        a[l] = 0.999999 - 1e-6 * l;
+        b[l] = 1e-7 * (l + 1);
+      }
     // the chains as separate registers: with an array GCC interchanges the
     // loops and runs one dependent chain at a time (latency, not throughput)
-    v8d r0 = acc[0], r1 = acc[1], r2 = acc[2], r3 = acc[3], r4 = acc[4], r5 = acc[5], r6 = acc[6],
+    vec r0 = acc[0], r1 = acc[1], r2 = acc[2], r3 = acc[3], r4 = acc[4], r5 = acc[5], r6 = acc[6],
         r7 = acc[7], r8 = acc[8], r9 = acc[9], r10 = acc[10], r11 = acc[11], r12 = acc[12],
         r13 = acc[13], r14 = acc[14], r15 = acc[15], r16 = acc[16], r17 = acc[17], r18 = acc[18],
         r19 = acc[19], r20 = acc[20], r21 = acc[21], r22 = acc[22], r23 = acc[23];
-#define WHEELRAIL_FMA(r) r = r * a + b; // one FMA with -ffp-contract=fast
+    // one FMA with -ffp-contract=fast, on the first n_chains chains
+#define WHEELRAIL_FMA(k)      \
+  if constexpr (k < n_chains) \
+    r##k = r##k * a + b;
     for (long i = 0; i < n_iter; ++i)
       {
         // clang-format off
-        WHEELRAIL_FMA(r0) WHEELRAIL_FMA(r1) WHEELRAIL_FMA(r2) WHEELRAIL_FMA(r3) WHEELRAIL_FMA(r4) WHEELRAIL_FMA(r5)
-        WHEELRAIL_FMA(r6) WHEELRAIL_FMA(r7) WHEELRAIL_FMA(r8) WHEELRAIL_FMA(r9) WHEELRAIL_FMA(r10) WHEELRAIL_FMA(r11)
-        WHEELRAIL_FMA(r12) WHEELRAIL_FMA(r13) WHEELRAIL_FMA(r14) WHEELRAIL_FMA(r15) WHEELRAIL_FMA(r16) WHEELRAIL_FMA(r17)
-        WHEELRAIL_FMA(r18) WHEELRAIL_FMA(r19) WHEELRAIL_FMA(r20) WHEELRAIL_FMA(r21) WHEELRAIL_FMA(r22) WHEELRAIL_FMA(r23)
+        WHEELRAIL_FMA(0) WHEELRAIL_FMA(1) WHEELRAIL_FMA(2) WHEELRAIL_FMA(3) WHEELRAIL_FMA(4) WHEELRAIL_FMA(5)
+        WHEELRAIL_FMA(6) WHEELRAIL_FMA(7) WHEELRAIL_FMA(8) WHEELRAIL_FMA(9) WHEELRAIL_FMA(10) WHEELRAIL_FMA(11)
+        WHEELRAIL_FMA(12) WHEELRAIL_FMA(13) WHEELRAIL_FMA(14) WHEELRAIL_FMA(15) WHEELRAIL_FMA(16) WHEELRAIL_FMA(17)
+        WHEELRAIL_FMA(18) WHEELRAIL_FMA(19) WHEELRAIL_FMA(20) WHEELRAIL_FMA(21) WHEELRAIL_FMA(22) WHEELRAIL_FMA(23)
         // clang-format on
       }
 #undef WHEELRAIL_FMA
-    const v8d out[n_chains] = {r0,  r1,  r2,  r3,  r4,  r5,  r6,  r7,  r8,  r9,  r10, r11,
-                               r12, r13, r14, r15, r16, r17, r18, r19, r20, r21, r22, r23};
-    double    sum           = 0;
+    const vec out[24] = {r0,  r1,  r2,  r3,  r4,  r5,  r6,  r7,  r8,  r9,  r10, r11,
+                         r12, r13, r14, r15, r16, r17, r18, r19, r20, r21, r22, r23};
+    double    sum     = 0;
     for (unsigned int c = 0; c < n_chains; ++c)
-      for (unsigned int l = 0; l < 8; ++l)
+      for (unsigned int l = 0; l < lanes; ++l)
         sum += out[c][l];
     return sum;
   }
@@ -82,7 +102,7 @@ namespace
         for (auto &th : threads)
           th.join();
         const double s = seconds_since(start);
-        best           = std::max(best, 2. * 8 * n_chains * double(n_iter) * n_threads / s * 1e-9);
+        best = std::max(best, 2. * lanes * n_chains * double(n_iter) * n_threads / s * 1e-9);
         for (const double x : sums)
           checksum += x;
       }
@@ -144,9 +164,10 @@ main(int argc, char **argv)
   const double b1       = bandwidth(1, checksum);
   const double bn       = bandwidth(n_all, checksum);
   std::printf("Machine limits (bench/machine_limits, best of 5-6 repetitions):\n"
-              "  floating point, 8-lane FMA chains : %.1f GFLOP/s on 1 core, %.1f on %u\n"
+              "  floating point, %u-lane FMA chains : %.1f GFLOP/s on 1 core, %.1f on %u\n"
               "  memory bandwidth, STREAM triad   : %.1f GB/s on 1 core, %.1f on %u\n"
               "  (checksum %.6g)\n",
+              lanes,
               f1,
               fn,
               n_all,

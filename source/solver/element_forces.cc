@@ -45,9 +45,9 @@ namespace WheelRail
     const auto    loop         = [&](auto with_energies) {
       constexpr bool e = decltype(with_energies)::value;
       return prm.solver.single_precision_geometry ?
-                          element_loop<SingleData, e>(
+                          element_loop<SingleData<>, e>(
                  batch_single.data(), SingleField::n_double, U, V, F, with_damping, energies) :
-                          element_loop<DoubleData, e>(
+                          element_loop<DoubleData<>, e>(
                  batch_data.data(), Field::n_fields * W, U, V, F, with_damping, energies);
     };
     return energies != nullptr ? loop(std::true_type()) : loop(std::false_type());
@@ -149,11 +149,26 @@ namespace WheelRail
             v_batch = v_gathered[slot];
           }
         const double *kappa_ref = &batch_kappa_ref[std::size_t(batch) * W];
-        power += with_damping ?
-                   batch_forces<true, with_energies>(
-                     data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref) :
-                   batch_forces<false, with_energies>(
-                     data, lame_lambda, lame_mu, u_batch, v_batch, fb, &batch_energies, kappa_ref);
+        // the kernel once per part of the batch that its vector holds
+        double batch_power = 0;
+#pragma GCC unroll 4
+        for (unsigned int lane = 0; lane < W; lane += lanes_of<typename Data::vector>)
+          {
+            const auto part = [&](auto damping) __attribute__((always_inline))
+            {
+              return batch_forces<decltype(damping)::value, with_energies>(Data{data.data, lane},
+                                                                           lame_lambda,
+                                                                           lame_mu,
+                                                                           u_batch + lane,
+                                                                           v_batch + lane,
+                                                                           fb + lane,
+                                                                           batch_power,
+                                                                           &batch_energies,
+                                                                           kappa_ref + lane);
+            };
+            batch_power = with_damping ? part(std::true_type()) : part(std::false_type());
+          }
+        power += batch_power;
         if (family != numbers::invalid_unsigned_int)
           {
             scatter_family(F,

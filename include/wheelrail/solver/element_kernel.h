@@ -19,6 +19,13 @@
 
 #define WHEELRAIL_ALWAYS_INLINE inline __attribute__((always_inline))
 
+/** Whether the target's vector registers hold 8 doubles (AVX-512). */
+#ifdef __AVX512F__
+#  define WHEELRAIL_EIGHT_LANE_REGISTERS 1
+#else
+#  define WHEELRAIL_EIGHT_LANE_REGISTERS 0
+#endif
+
 namespace WheelRail
 {
   namespace ElementKernel
@@ -54,36 +61,77 @@ namespace WheelRail
                                  {-1, 1, 1, -1, 1, -1, -1, 1}};
 
     /**
-     * W lanes of doubles as one value: GCC/Clang vector extension. With
-     * -march=native on an AVX-512 machine one batch is one zmm register,
-     * with AVX2 two ymm registers. Debian's deal.II has no SIMD
-     * (VectorizedArray<double> has one lane), so the kernel does its own.
+     * W, 4 and 2 lanes of doubles as one value: GCC/Clang vector extension.
+     * Debian's deal.II has no SIMD (VectorizedArray<double> has one lane),
+     * so the kernel does its own.
      */
     typedef double v8d __attribute__((vector_size(64)));
+    typedef double v4d __attribute__((vector_size(32)));
+    typedef double v2d __attribute__((vector_size(16)));
     static_assert(W == 8, "the vector kernel is written for 8 lanes");
 
-    WHEELRAIL_ALWAYS_INLINE v8d
+    /**
+     * The vector the force kernel computes with: the widest that the target
+     * keeps in registers (one zmm with AVX-512, one ymm with AVX2, one xmm
+     * with SSE2). With fewer than W lanes the kernel runs once per part of
+     * the batch; every lane's arithmetic is the same, and so are its bits.
+     * A wider vector than the registers would be split by the compiler,
+     * and the kernel's tensors would no longer fit in them.
+     */
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
+    typedef v8d kernel_vector;
+#elif defined(__AVX__)
+    typedef v4d kernel_vector;
+#else
+    typedef v2d kernel_vector;
+#endif
+
+    /** Lanes of the vector type @p V. */
+    template <typename V>
+    constexpr unsigned int lanes_of = sizeof(V) / sizeof(double);
+
+    template <typename V = v8d>
+    WHEELRAIL_ALWAYS_INLINE V
     load(const double *p)
     {
-      v8d x;
+      V x;
       __builtin_memcpy(&x, p, sizeof(x));
       return x;
     }
+    template <typename V>
     WHEELRAIL_ALWAYS_INLINE void
-    store(double *p, const v8d &x)
+    store(double *p, const V &x)
     {
       __builtin_memcpy(p, &x, sizeof(x));
     }
 
-    typedef float v8f __attribute__((vector_size(32)));
+    /** The floats of as many lanes as @p V has. */
+    template <typename V>
+    struct FloatLanes;
+    template <>
+    struct FloatLanes<v8d>
+    {
+      typedef float type __attribute__((vector_size(32)));
+    };
+    template <>
+    struct FloatLanes<v4d>
+    {
+      typedef float type __attribute__((vector_size(16)));
+    };
+    template <>
+    struct FloatLanes<v2d>
+    {
+      typedef float type __attribute__((vector_size(8)));
+    };
 
-    /** Eight floats widened to doubles. */
-    WHEELRAIL_ALWAYS_INLINE v8d
+    /** Floats widened to doubles, as many as @p V has lanes. */
+    template <typename V>
+    WHEELRAIL_ALWAYS_INLINE V
     load_widened(const float *p)
     {
-      v8f x;
+      typename FloatLanes<V>::type x;
       __builtin_memcpy(&x, p, sizeof(x));
-      return __builtin_convertvector(x, v8d);
+      return __builtin_convertvector(x, V);
     }
 
     /**
@@ -105,36 +153,39 @@ namespace WheelRail
     } // namespace SingleField
 
     /** The kernel's view of a batch's element data in double precision
-     *  (the layout of Field). */
+     *  (the layout of Field), lanes @p lane to @p lane + lanes_of<V> - 1. */
+    template <typename V = kernel_vector>
     struct DoubleData
     {
-      const double *data;
+      typedef V          vector;
+      const double      *data;
+      const unsigned int lane = 0;
       /** The double kernel sums the gradient over all eight vertices. */
       static constexpr bool translation_free = false;
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       b(const unsigned int a, const unsigned int j) const
       {
-        return load(data + (Field::b + a * 3 + j) * W);
+        return load<V>(data + (Field::b + a * 3 + j) * W + lane);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       c(const unsigned int alpha, const unsigned int j) const
       {
-        return load(data + (Field::c + alpha * 3 + j) * W);
+        return load<V>(data + (Field::c + alpha * 3 + j) * W + lane);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       volume() const
       {
-        return load(data + Field::volume * W);
+        return load<V>(data + Field::volume * W + lane);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       kappa() const
       {
-        return load(data + Field::kappa * W);
+        return load<V>(data + Field::kappa * W + lane);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       beta() const
       {
-        return load(data + Field::beta * W);
+        return load<V>(data + Field::beta * W + lane);
       }
     };
 
@@ -147,66 +198,69 @@ namespace WheelRail
      * the same sum for exact b_a and leaves only the rounding of the
      * deformation and rotation within the cell (doc/performance.md).
      */
+    template <typename V = kernel_vector>
     struct SingleData
     {
+      typedef V             vector;
       const double         *data;
+      const unsigned int    lane             = 0;
       static constexpr bool translation_free = true;
       WHEELRAIL_ALWAYS_INLINE const float *
       geometry() const
       {
-        return reinterpret_cast<const float *>(data);
+        return reinterpret_cast<const float *>(data) + lane;
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       b(const unsigned int a, const unsigned int j) const
       {
-        return load_widened(geometry() + (Field::b + a * 3 + j) * W);
+        return load_widened<V>(geometry() + (Field::b + a * 3 + j) * W);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       c(const unsigned int alpha, const unsigned int j) const
       {
-        return load_widened(geometry() + (Field::c + alpha * 3 + j) * W);
+        return load_widened<V>(geometry() + (Field::c + alpha * 3 + j) * W);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       volume() const
       {
-        return load(data + SingleField::volume);
+        return load<V>(data + SingleField::volume + lane);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       kappa() const
       {
-        return load(data + SingleField::kappa);
+        return load<V>(data + SingleField::kappa + lane);
       }
-      WHEELRAIL_ALWAYS_INLINE v8d
+      WHEELRAIL_ALWAYS_INLINE V
       beta() const
       {
-        return load(data + SingleField::beta);
+        return load<V>(data + SingleField::beta + lane);
       }
     };
 
     /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
      *  of a batch: H from the displacements, L from the velocities. */
-    template <typename Data>
+    template <typename Data, typename V = typename Data::vector>
     WHEELRAIL_ALWAYS_INLINE void
-    batch_gradient(const Data &data, const double *__restrict wb, v8d (&G)[3][3])
+    batch_gradient(const Data &data, const double *__restrict wb, V (&G)[3][3])
     {
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)
 #pragma GCC unroll 3
         for (unsigned int j = 0; j < 3; ++j)
-          G[i][j] = v8d{};
+          G[i][j] = V{};
 #pragma GCC unroll 8
       for (unsigned int a = Data::translation_free ? 1 : 0; a < 8; ++a)
         {
-          v8d b[3];
+          V b[3];
 #pragma GCC unroll 3
           for (unsigned int j = 0; j < 3; ++j)
             b[j] = data.b(a, j);
 #pragma GCC unroll 3
           for (unsigned int i = 0; i < 3; ++i)
             {
-              const v8d wa = Data::translation_free ?
-                               load(wb + (a * 3 + i) * W) - load(wb + i * W) :
-                               load(wb + (a * 3 + i) * W);
+              const V wa = Data::translation_free ?
+                             load<V>(wb + (a * 3 + i) * W) - load<V>(wb + i * W) :
+                             load<V>(wb + (a * 3 + i) * W);
 #pragma GCC unroll 3
               for (unsigned int j = 0; j < 3; ++j)
                 G[i][j] += wa * b[j];
@@ -220,19 +274,20 @@ namespace WheelRail
      *  wb ([vertex][component][lane]), component @p i, by a partial
      *  Walsh-Hadamard transform over the vertex bits (x, y, z): 18 additions
      *  instead of 28. */
+    template <typename V>
     WHEELRAIL_ALWAYS_INLINE void
-    hourglass_sums(const double *__restrict wb, const unsigned int i, v8d (&s)[4])
+    hourglass_sums(const double *__restrict wb, const unsigned int i, V (&s)[4])
     {
-      v8d p[4], m[4];
+      V p[4], m[4];
 #pragma GCC unroll 4
       for (unsigned int k = 0; k < 4; ++k)
         {
-          const v8d w0 = load(wb + (2 * k * 3 + i) * W);
-          const v8d w1 = load(wb + ((2 * k + 1) * 3 + i) * W);
-          p[k]         = w0 + w1;
-          m[k]         = w0 - w1;
+          const V w0 = load<V>(wb + (2 * k * 3 + i) * W);
+          const V w1 = load<V>(wb + ((2 * k + 1) * 3 + i) * W);
+          p[k]       = w0 + w1;
+          m[k]       = w0 - w1;
         }
-      const v8d mm0 = m[0] - m[1], mm1 = m[2] - m[3];
+      const V mm0 = m[0] - m[1], mm1 = m[2] - m[3];
       s[0] = (p[0] - p[1]) - (p[2] - p[3]); // (-1)^(y+z)
       s[1] = (m[0] + m[1]) - (m[2] + m[3]); // (-1)^(x+z)
       s[2] = mm0 + mm1;                     // (-1)^(x+y)
@@ -242,19 +297,20 @@ namespace WheelRail
     /** Per vertex a, q_a = sum_alpha hg[alpha][a] g_alpha (the inverse of
      *  hourglass_sums(): 12 additions instead of 24) from the four sums
      *  and differences of the g_alpha formed once. */
+    template <typename V>
     struct HourglassSpread
     {
-      v8d A, B, P, M;
+      V A, B, P, M;
       WHEELRAIL_ALWAYS_INLINE
-      HourglassSpread(const v8d &g0, const v8d &g1, const v8d &g2, const v8d &g3)
+      HourglassSpread(const V &g0, const V &g1, const V &g2, const V &g3)
         : A(g0 - g3)
         , B(g0 + g3)
         , P(g1 + g2)
         , M(g1 - g2)
       {}
       /** s + q_a for vertex a = x + 2y + 4z. */
-      WHEELRAIL_ALWAYS_INLINE v8d
-      add_to(const unsigned int a, const v8d &s) const
+      WHEELRAIL_ALWAYS_INLINE V
+      add_to(const unsigned int a, const V &s) const
       {
         switch (a)
           {
@@ -286,24 +342,26 @@ namespace WheelRail
 
     /** Green-Lagrange strain E = (H + H^T + H^T H) / 2 of the displacement
      *  gradient @p H, by its six components. */
+    template <typename V>
     WHEELRAIL_ALWAYS_INLINE void
-    green_lagrange(const v8d (&H)[3][3], v8d (&E)[6])
+    green_lagrange(const V (&H)[3][3], V (&E)[6])
     {
 #pragma GCC unroll 6
       for (unsigned int q = 0; q < 6; ++q)
         {
           const unsigned int i = sym_i[q], j = sym_j[q];
-          const v8d          hth = H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j];
+          const V            hth = H[0][i] * H[0][j] + H[1][i] * H[1][j] + H[2][i] * H[2][j];
           E[q]                   = 0.5 * (H[i][j] + H[j][i] + hth);
         }
     }
 
     /** A : A of a symmetric tensor given by its six components. */
-    WHEELRAIL_ALWAYS_INLINE v8d
-    symmetric_square(const v8d (&A)[6])
+    template <typename V>
+    WHEELRAIL_ALWAYS_INLINE V
+    symmetric_square(const V (&A)[6])
     {
-      v8d       d = A[0] * A[0] + A[1] * A[1] + A[2] * A[2];
-      const v8d o = A[3] * A[3] + A[4] * A[4] + A[5] * A[5];
+      V       d = A[0] * A[0] + A[1] * A[1] + A[2] * A[2];
+      const V o = A[3] * A[3] + A[4] * A[4] + A[5] * A[5];
       d += o + o;
       return d;
     }
@@ -312,16 +370,24 @@ namespace WheelRail
      *  (zero on padding lanes, which have zero volume and stiffness). */
     struct BatchEnergies
     {
-      v8d internal{};            ///< V0 (lambda/2 tr(E)^2 + mu E:E)
-      v8d hourglass{};           ///< kappa/2 |hourglass modes|^2
-      v8d hourglass_reference{}; ///< the same with the reference QM
+      alignas(64) double internal[W]            = {}; ///< V0 (lambda/2 tr(E)^2 + mu E:E)
+      alignas(64) double hourglass[W]           = {}; ///< kappa/2 |hourglass modes|^2
+      alignas(64) double hourglass_reference[W] = {}; ///< the same with the reference QM
     };
+
+    /** @p x added to the lanes of @p sum that it stands for. */
+    template <typename V>
+    WHEELRAIL_ALWAYS_INLINE void
+    add_lanes(double *sum, const V &x)
+    {
+      store(sum, load<V>(sum) + x);
+    }
 
     /**
      * Element forces of one batch of W cells: one-point total-Lagrangian
      * St. Venant-Kirchhoff stress, element stiffness damping and FB
      * stiffness hourglass forces. u, v, f are [vertex][component][lane];
-     * every operation acts on all W lanes at once, and all loops are
+     * every operation acts on all lanes of the vector at once, and all loops are
      * unrolled so that the tensors stay in registers. The symmetric
      * tensors (E, its rate, S) are formed from their six components, the
      * damping stress with the elastic one as S = C : (E + beta dE/dt), and
@@ -333,8 +399,17 @@ namespace WheelRail
      * whose derivative the forces are) are added to @p energies, with the
      * reference hourglass stiffness @p kappa_ref (W lanes); the forces
      * are the same bits either way.
+     *
+     * The kernel works on the lanes data.lane to data.lane +
+     * lanes_of<V> - 1 of the batch (all W where V is v8d): @p ub, @p vb,
+     * @p fb and @p kappa_ref start at that lane (the stride between fields
+     * stays W). It returns @p power_sum plus the damping power of its
+     * lanes, added lane by lane.
      */
-    template <bool with_damping, bool with_energies = false, typename Data>
+    template <bool with_damping,
+              bool with_energies = false,
+              typename Data,
+              typename V = typename Data::vector>
     WHEELRAIL_ALWAYS_INLINE double
     batch_forces(const Data  &data,
                  const double lambda,
@@ -342,19 +417,20 @@ namespace WheelRail
                  const double *__restrict ub,
                  const double *__restrict vb,
                  double *__restrict fb,
+                 double         power_sum = 0,
                  BatchEnergies *energies  = nullptr,
                  const double  *kappa_ref = nullptr)
     {
-      const v8d V0 = data.volume();
-      const v8d la = v8d{} + lambda;
-      const v8d mu = v8d{} + mu_;
-      const v8d ka = data.kappa();
+      const V V0 = data.volume();
+      const V la = V{} + lambda;
+      const V mu = V{} + mu_;
+      const V ka = data.kappa();
 
-      v8d H[3][3];
+      V H[3][3];
       batch_gradient(data, ub, H);
 
       constexpr const unsigned int(&si)[6] = sym_i, (&sj)[6] = sym_j;
-      v8d E[6];
+      V E[6];
       green_lagrange(H, E);
 
       if constexpr (with_energies)
@@ -362,90 +438,91 @@ namespace WheelRail
           // E once more, from a copy of H that the compiler cannot see
           // through: further uses of the forces' E would change how it is
           // contracted into FMAs, and with it the forces' last bits
-          v8d h[3][3];
+          V h[3][3];
 #pragma GCC unroll 3
           for (unsigned int i = 0; i < 3; ++i)
 #pragma GCC unroll 3
             for (unsigned int j = 0; j < 3; ++j)
               h[i][j] = H[i][j];
           asm("" : "+m"(h));
-          v8d e[6];
+          V e[6];
           green_lagrange(h, e);
-          const v8d tr = e[0] + e[1] + e[2];
-          energies->internal += V0 * (0.5 * la * tr * tr + mu * symmetric_square(e));
+          const V tr = e[0] + e[1] + e[2];
+          add_lanes(energies->internal + data.lane,
+                    V0 * (0.5 * la * tr * tr + mu * symmetric_square(e)));
         }
 
-      v8d power = {};
+      V power = {};
       if constexpr (with_damping)
         {
-          const v8d beta = data.beta();
-          v8d       L[3][3];
+          const V beta = data.beta();
+          V       L[3][3];
           batch_gradient(data, vb, L);
           // dE/dt = sym(F^T L), F = I + H
-          v8d Ed[6];
+          V Ed[6];
 #pragma GCC unroll 6
           for (unsigned int q = 0; q < 6; ++q)
             {
               const unsigned int i = si[q], j = sj[q];
-              v8d                ftl = L[i][j] + L[j][i];
+              V                  ftl = L[i][j] + L[j][i];
 #pragma GCC unroll 3
               for (unsigned int k = 0; k < 3; ++k)
                 ftl += H[k][i] * L[k][j] + L[k][i] * H[k][j];
               Ed[q] = 0.5 * ftl;
             }
-          const v8d trEd = Ed[0] + Ed[1] + Ed[2];
-          power          = beta * V0 * (la * trEd * trEd + 2. * mu * symmetric_square(Ed));
+          const V trEd = Ed[0] + Ed[1] + Ed[2];
+          power        = beta * V0 * (la * trEd * trEd + 2. * mu * symmetric_square(Ed));
 #pragma GCC unroll 6
           for (unsigned int q = 0; q < 6; ++q)
             E[q] += beta * Ed[q];
         }
 
-      const v8d trE = E[0] + E[1] + E[2];
-      v8d       S[3][3];
+      const V trE = E[0] + E[1] + E[2];
+      V       S[3][3];
 #pragma GCC unroll 6
       for (unsigned int q = 0; q < 6; ++q)
         {
-          const v8d sq    = q < 3 ? 2. * mu * E[q] + la * trE : 2. * mu * E[q];
+          const V sq      = q < 3 ? 2. * mu * E[q] + la * trE : 2. * mu * E[q];
           S[si[q]][sj[q]] = sq;
           S[sj[q]][si[q]] = sq;
         }
 
-      v8d                  g[4][3];
-      [[maybe_unused]] v8d modes = {}; // the squared hourglass modes summed (energies)
+      V                  g[4][3];
+      [[maybe_unused]] V modes = {}; // the squared hourglass modes summed (energies)
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)
         {
-          v8d s[4];
+          V s[4];
           hourglass_sums(ub, i, s);
 #pragma GCC unroll 4
           for (unsigned int al = 0; al < 4; ++al)
             {
-              const v8d c0 = data.c(al, 0), c1 = data.c(al, 1), c2 = data.c(al, 2);
-              const v8d mode = s[al] - (c0 * H[i][0] + c1 * H[i][1] + c2 * H[i][2]);
-              g[al][i]       = ka * mode;
+              const V c0 = data.c(al, 0), c1 = data.c(al, 1), c2 = data.c(al, 2);
+              const V mode = s[al] - (c0 * H[i][0] + c1 * H[i][1] + c2 * H[i][2]);
+              g[al][i]     = ka * mode;
               if constexpr (with_energies)
                 modes += mode * mode;
             }
         }
       if constexpr (with_energies)
         {
-          energies->hourglass += 0.5 * ka * modes;
-          energies->hourglass_reference += 0.5 * load(kappa_ref) * modes;
+          add_lanes(energies->hourglass + data.lane, 0.5 * ka * modes);
+          add_lanes(energies->hourglass_reference + data.lane, 0.5 * load<V>(kappa_ref) * modes);
         }
 
-      v8d T[3][3];
+      V T[3][3];
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)
 #pragma GCC unroll 3
         for (unsigned int j = 0; j < 3; ++j)
           {
-            v8d fs  = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
+            V fs    = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
             T[i][j] = V0 * fs;
           }
 #pragma GCC unroll 4
       for (unsigned int al = 0; al < 4; ++al)
         {
-          v8d c[3];
+          V c[3];
 #pragma GCC unroll 3
           for (unsigned int j = 0; j < 3; ++j)
             c[j] = data.c(al, j);
@@ -456,13 +533,13 @@ namespace WheelRail
               T[i][j] -= g[al][i] * c[j];
         }
 
-      const HourglassSpread spread[3] = {{g[0][0], g[1][0], g[2][0], g[3][0]},
-                                         {g[0][1], g[1][1], g[2][1], g[3][1]},
-                                         {g[0][2], g[1][2], g[2][2], g[3][2]}};
+      const HourglassSpread<V> spread[3] = {{g[0][0], g[1][0], g[2][0], g[3][0]},
+                                            {g[0][1], g[1][1], g[2][1], g[3][1]},
+                                            {g[0][2], g[1][2], g[2][2], g[3][2]}};
 #pragma GCC unroll 8
       for (unsigned int a = 0; a < 8; ++a)
         {
-          v8d b[3];
+          V b[3];
 #pragma GCC unroll 3
           for (unsigned int j = 0; j < 3; ++j)
             b[j] = data.b(a, j);
@@ -471,10 +548,9 @@ namespace WheelRail
             store(fb + (a * 3 + i) * W,
                   spread[i].add_to(a, T[i][0] * b[0] + T[i][1] * b[1] + T[i][2] * b[2]));
         }
-      double sum = 0;
-      for (unsigned int l = 0; l < W; ++l)
-        sum += power[l];
-      return sum;
+      for (unsigned int l = 0; l < lanes_of<V>; ++l)
+        power_sum += power[l];
+      return power_sum;
     }
 
 

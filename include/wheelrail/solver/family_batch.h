@@ -8,6 +8,12 @@
  *
  * Included only by the solver's translation units compiled with -O3, like
  * element_kernel.h, whose vector types it uses.
+ *
+ * The permutations act on whole 8-lane vectors where the target has 8-lane
+ * registers (AVX-512). Elsewhere (AVX2, SSE2) the compiler would take such
+ * a permutation apart value by value through the stack, so the same values
+ * are moved by scalar copies and the grid sums added by scalar additions in
+ * the same order: the same bits either way.
  */
 #ifndef wheelrail_solver_family_batch_h
 #define wheelrail_solver_family_batch_h
@@ -95,9 +101,19 @@ namespace WheelRail
     WHEELRAIL_ALWAYS_INLINE void
     expand_family(const double (&g)[3][32], double *wb, std::integer_sequence<unsigned int, a...>)
     {
-#pragma GCC unroll 3
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
+#  pragma GCC unroll 3
       for (unsigned int d = 0; d < 3; ++d)
         (store(wb + (a * 3 + d) * W, expand_vertex<a>(g[d])), ...);
+#else
+#  pragma GCC unroll 3
+      for (unsigned int d = 0; d < 3; ++d)
+#  pragma GCC unroll 8
+        for (unsigned int v = 0; v < 8; ++v)
+#  pragma GCC unroll 8
+          for (unsigned int l = 0; l < W; ++l)
+            wb[(v * 3 + d) * W + l] = g[d][family_offset[v] + family_offset[l]];
+#endif
     }
 
     typedef double v4d __attribute__((vector_size(32)));
@@ -111,11 +127,12 @@ namespace WheelRail
     WHEELRAIL_ALWAYS_INLINE void
     gather_family_grid(const double *X, const unsigned int *grid, double (&g)[3][32])
     {
-#pragma GCC unroll 4
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
+#  pragma GCC unroll 4
       for (unsigned int q = 0; q < 4; ++q)
         {
           v4d node[8];
-#pragma GCC unroll 8
+#  pragma GCC unroll 8
           for (unsigned int k = 0; k < 8; ++k)
             __builtin_memcpy(&node[k], X + grid[std::min(8 * q + k, 26u)], sizeof(v4d));
           // pairs of nodes, then x and y of four nodes, z of four nodes
@@ -131,6 +148,16 @@ namespace WheelRail
           store(&g[1][8 * q], __builtin_shufflevector(xy0, xy1, 4, 5, 6, 7, 12, 13, 14, 15));
           store(&g[2][8 * q], __builtin_shufflevector(z0, z1, 0, 1, 2, 3, 8, 9, 10, 11));
         }
+#else
+#  pragma GCC unroll 32
+      for (unsigned int n = 0; n < 32; ++n)
+        {
+          const unsigned int idx = grid[std::min(n, 26u)];
+          g[0][n]                = X[idx];
+          g[1][n]                = X[idx + 1];
+          g[2][n]                = X[idx + 2];
+        }
+#endif
     }
 
     /** The family scatter in vector form: for vertex a, which lanes
@@ -178,6 +205,26 @@ namespace WheelRail
         ...);
     }
 
+    /** Per grid node of a family, where its terms lie in the batch forces
+     *  ([vertex][component][lane], component 0), in ascending vertex order. */
+    struct FamilyNodeTerms
+    {
+      unsigned int count[27];
+      unsigned int offset[27][8];
+      constexpr FamilyNodeTerms()
+        : count{}
+        , offset{}
+      {
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < W; ++l)
+            {
+              const unsigned int n  = family_offset[a] + family_offset[l];
+              offset[n][count[n]++] = a * 3 * W + l;
+            }
+      }
+    };
+    inline constexpr FamilyNodeTerms family_node_terms{};
+
     /** The family scatter: the batch forces @p fb summed per grid node
      *  in vector registers (terms in ascending vertex order), then each
      *  grid node's three sums added to F. */
@@ -188,8 +235,9 @@ namespace WheelRail
                    const double *__restrict fb,
                    std::integer_sequence<unsigned int, a...>)
     {
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
       alignas(64) double grid_sums[3][32];
-#pragma GCC unroll 3
+#  pragma GCC unroll 3
       for (unsigned int d = 0; d < 3; ++d)
         {
           v8d sums[4] = {};
@@ -197,11 +245,11 @@ namespace WheelRail
                                  sums,
                                  std::make_integer_sequence<unsigned int, 4>{}),
            ...);
-#pragma GCC unroll 4
+#  pragma GCC unroll 4
           for (unsigned int r = 0; r < 4; ++r)
             store(&grid_sums[d][8 * r], sums[r]);
         }
-#pragma GCC unroll 27
+#  pragma GCC unroll 27
       for (unsigned int n = 0; n < 27; ++n)
         {
           const unsigned int idx = grid[n];
@@ -209,6 +257,24 @@ namespace WheelRail
           F[idx + 1] += grid_sums[1][n];
           F[idx + 2] += grid_sums[2][n];
         }
+#else
+      // per grid node, its terms in ascending vertex order from zero, as
+      // the vector sums add them
+#  pragma GCC unroll 27
+      for (unsigned int n = 0; n < 27; ++n)
+        {
+          const unsigned int idx = grid[n];
+#  pragma GCC unroll 3
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              double s = 0;
+#  pragma GCC unroll 8
+              for (unsigned int t = 0; t < family_node_terms.count[n]; ++t)
+                s += fb[family_node_terms.offset[n][t] + d * W];
+              F[idx + d] += s;
+            }
+        }
+#endif
     }
   } // namespace ElementKernel
 } // namespace WheelRail
