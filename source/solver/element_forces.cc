@@ -92,15 +92,11 @@ namespace WheelRail
                 gather_family_grid(V, grid, vg[slot]);
             }
           else
-            for (unsigned int n = 0; n < 27; ++n)
-              {
-                const unsigned int idx = grid[n];
-                for (unsigned int d = 0; d < 3; ++d)
-                  ug[slot][d][n] = U[idx + d];
-                if (with_damping)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    vg[slot][d][n] = V[idx + d];
-              }
+            {
+              gather_family_grid_by_node(U, grid, ug[slot]);
+              if (with_damping)
+                gather_family_grid_by_node(V, grid, vg[slot]);
+            }
         }
       else
         {

@@ -119,11 +119,24 @@ namespace WheelRail
     typedef double v4d __attribute__((vector_size(32)));
 
     /** The nodal values of a family's 27 grid nodes @p grid (x-DoF
+     *  indices into @p X, node-blocked) per component, @p g[d][n], by
+     *  scalar copies (any node index; lanes 27-31 left as they are). */
+    WHEELRAIL_ALWAYS_INLINE void
+    gather_family_grid_by_node(const double *X, const unsigned int *grid, double (&g)[3][32])
+    {
+#pragma GCC unroll 27
+      for (unsigned int n = 0; n < 27; ++n)
+        for (unsigned int d = 0; d < 3; ++d)
+          g[d][n] = X[grid[n] + d];
+    }
+
+    /** The nodal values of a family's 27 grid nodes @p grid (x-DoF
      *  indices into @p X, node-blocked) per component, @p g[d][n]: each
      *  node's x, y, z (and one value beyond, unused) by one 4-wide load,
      *  eight nodes transposed by permutations (lanes 27-31 repeat node 26).
      *  The values are moved, not combined: the same bits as scalar copies.
-     *  Every node needs idx + 4 <= the vector's size. */
+     *  Every node needs idx + 4 <= the vector's size. Without 8-lane
+     *  registers, gather_family_grid_by_node(). */
     WHEELRAIL_ALWAYS_INLINE void
     gather_family_grid(const double *X, const unsigned int *grid, double (&g)[3][32])
     {
@@ -149,14 +162,7 @@ namespace WheelRail
           store(&g[2][8 * q], __builtin_shufflevector(z0, z1, 0, 1, 2, 3, 8, 9, 10, 11));
         }
 #else
-#  pragma GCC unroll 32
-      for (unsigned int n = 0; n < 32; ++n)
-        {
-          const unsigned int idx = grid[std::min(n, 26u)];
-          g[0][n]                = X[idx];
-          g[1][n]                = X[idx + 1];
-          g[2][n]                = X[idx + 2];
-        }
+      gather_family_grid_by_node(X, grid, g);
 #endif
     }
 
