@@ -84,10 +84,13 @@ namespace WheelRail
                       "w = 2 sqrt(k / m): a spring stiff for the time step "
                       "is left undamped.");
     prm.declare_entry("Search interval",
-                      "10",
+                      "1000",
                       Patterns::Integer(1, 1000000),
                       "Steps between rebuilds of the candidate lists [-], range "
-                      "[1, 1e6].");
+                      "[1, 1e6]. A backstop: the lists are also rebuilt when a "
+                      "candidate has moved Rebuild fraction x Search margin and "
+                      "when the approach bound finds that a slave and a face "
+                      "that are not listed could meet.");
     prm.declare_entry("Search margin",
                       "0.002",
                       Patterns::Double(1e-6, 1),
