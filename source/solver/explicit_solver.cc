@@ -42,6 +42,18 @@ namespace WheelRail
           f_ext.local_element(i)    = 0;
         }
 
+    // the wheel's nodes for the run-up damping of its rigid motion: their
+    // x DoFs in DoF order (a node's y and z DoFs follow its x DoF)
+    runup_nodes.clear();
+    for (unsigned int k = 0; k < mass.locally_owned_size(); ++k)
+      if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] == 0)
+        {
+          AssertThrow(k + 2 < mass.locally_owned_size() && node_component[k + 2] == 2 &&
+                        node_material[k + 2] == Geometry::MaterialIds::wheel,
+                      ExcInternalError());
+          runup_nodes.push_back(k);
+        }
+
     prescribed = prescribed_dofs(prm, *this, bore_dofs);
     for (const PrescribedDof &p : prescribed)
       inv_mass.local_element(p.index) = 0;

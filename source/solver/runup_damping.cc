@@ -62,42 +62,39 @@ namespace WheelRail
       return 0.;
     };
 
-    // wheel rigid motion: the wheel's mass, centre of mass (relative to the
-    // axle), momentum, angular momentum and polar moment in the rolling
-    // plane, summed over the ranks; the damped velocity is
-    // w = (V_c - V_a) + (Omega - omega) e_y x (r - r_c)
-    double Vcx = 0, Vcz = 0, rcx = 0, rcz = 0, dOmega = 0;
+    double power = 0, rigid_power = 0;
     if (rigid)
       {
+        // the wheel's mass, centre of mass (relative to the axle), momentum,
+        // angular momentum and polar moment in the rolling plane, summed
+        // over the ranks; the damped velocity is
+        // w = (V_c - V_a) + (Omega - omega) e_y x (r - r_c). Over the wheel's
+        // nodes (runup_nodes: the x DoF, z two further), x then z, in DoF
+        // order as a loop over all DoFs would sum them.
         // mass (x DoFs), mass (z DoFs), sum m rz, sum m rx, sum m r^2,
         // P_x, P_z, L_y = sum m (rz v_x - rx v_z)
         std::array<double, 8> s = {{0, 0, 0, 0, 0, 0, 0, 0}};
-        for (unsigned int k = 0; k < n; ++k)
-          if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] != 1)
-            {
-              double rx, rz;
-              rigid_velocity(k, rx, rz);
-              if (node_component[k] == 0)
-                {
-                  s[0] += M[k];
-                  s[2] += M[k] * rz;
-                  s[4] += M[k] * rz * rz;
-                  s[5] += M[k] * V[k];
-                  s[7] += M[k] * rz * V[k];
-                }
-              else
-                {
-                  s[1] += M[k];
-                  s[3] += M[k] * rx;
-                  s[4] += M[k] * rx * rx;
-                  s[6] += M[k] * V[k];
-                  s[7] -= M[k] * rx * V[k];
-                }
-            }
+        for (const unsigned int kx : runup_nodes)
+          {
+            const unsigned int kz = kx + 2;
+            const double       rx = node_points[kx][0] + U[kx] - axle[0];
+            const double       rz = node_points[kx][2] + U[kz] - axle[2];
+            s[0] += M[kx];
+            s[2] += M[kx] * rz;
+            s[4] += M[kx] * rz * rz;
+            s[5] += M[kx] * V[kx];
+            s[7] += M[kx] * rz * V[kx];
+            s[1] += M[kz];
+            s[3] += M[kz] * rx;
+            s[4] += M[kz] * rx * rx;
+            s[6] += M[kz] * V[kz];
+            s[7] -= M[kz] * rx * V[kz];
+          }
         std::array<double, 8> g;
         Utilities::MPI::sum(ArrayView<const double>(s.data(), 8),
                             mpi_communicator,
                             ArrayView<double>(g.data(), 8));
+        double Vcx = 0, Vcz = 0, rcx = 0, rcz = 0, dOmega = 0;
         if (g[0] > 0 && g[1] > 0)
           {
             rcz = g[2] / g[0];
@@ -110,38 +107,40 @@ namespace WheelRail
             if (J > 0)
               dOmega = L / J - omega;
           }
+        // the reference motion: the centre of mass with the axle, rotation
+        // omega about it
+        for (const unsigned int kx : runup_nodes)
+          {
+            const unsigned int kz = kx + 2;
+            const double       rx = node_points[kx][0] + U[kx] - axle[0];
+            const double       rz = node_points[kx][2] + U[kz] - axle[2];
+            {
+              const double vr = Va[0] + omega * (rz - rcz);
+              const double w  = Vcx - Va[0] + dOmega * (rz - rcz);
+              const double fd = alpha * M[kx] * w;
+              F[kx] += fd;
+              power += fd * (V[kx] - vr);
+              rigid_power -= fd * vr;
+            }
+            {
+              const double vr = Va[2] - omega * (rx - rcx);
+              const double w  = Vcz - Va[2] - dOmega * (rx - rcx);
+              const double fd = alpha * M[kz] * w;
+              F[kz] += fd;
+              power += fd * (V[kz] - vr);
+              rigid_power -= fd * vr;
+            }
+          }
+        work = h * rigid_power;
+        return power;
       }
 
-    double power = 0, rigid_power = 0;
     for (unsigned int k = 0; k < n; ++k)
       {
-        const bool wheel = node_material[k] == Geometry::MaterialIds::wheel;
-        double     w = 0, vr = 0;
-        if (!rigid)
-          {
-            double rx, rz;
-            vr = wheel ? rigid_velocity(k, rx, rz) : 0.;
-            w  = V[k] - vr;
-          }
-        else if (wheel && node_component[k] != 1)
-          {
-            // the reference motion: the centre of mass with the axle,
-            // rotation omega about it
-            double rx, rz;
-            rigid_velocity(k, rx, rz);
-            if (node_component[k] == 0)
-              {
-                vr = Va[0] + omega * (rz - rcz);
-                w  = Vcx - Va[0] + dOmega * (rz - rcz);
-              }
-            else
-              {
-                vr = Va[2] - omega * (rx - rcx);
-                w  = Vcz - Va[2] - dOmega * (rx - rcx);
-              }
-          }
-        else
-          continue;
+        const bool   wheel = node_material[k] == Geometry::MaterialIds::wheel;
+        double       rx, rz;
+        const double vr = wheel ? rigid_velocity(k, rx, rz) : 0.;
+        const double w  = V[k] - vr;
         const double fd = alpha * M[k] * w;
         F[k] += fd;
         power += fd * (V[k] - vr);

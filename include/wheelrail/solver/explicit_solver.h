@@ -256,6 +256,8 @@ namespace WheelRail
                      const bool   first) const;
 
     std::vector<unsigned int> bore_dofs;
+    /** The x DoFs of the wheel's locally owned nodes (add_runup_damping()). */
+    std::vector<unsigned int> runup_nodes;
     VectorType                inv_mass; ///< 0 on constrained and prescribed DoFs
     VectorType                f_ext;    ///< gravity, condensed
     VectorType                u0;       ///< displacement at the start
