@@ -51,7 +51,7 @@ namespace WheelRail
           AssertThrow(k + 2 < mass.locally_owned_size() && node_component[k + 2] == 2 &&
                         node_material[k + 2] == Geometry::MaterialIds::wheel,
                       ExcInternalError());
-          runup_nodes.push_back(k);
+          runup_nodes.push_back({node_points[k][0], node_points[k][2], k});
         }
 
     prescribed = prescribed_dofs(prm, *this, bore_dofs);

@@ -74,11 +74,11 @@ namespace WheelRail
         // mass (x DoFs), mass (z DoFs), sum m rz, sum m rx, sum m r^2,
         // P_x, P_z, L_y = sum m (rz v_x - rx v_z)
         std::array<double, 8> s = {{0, 0, 0, 0, 0, 0, 0, 0}};
-        for (const unsigned int kx : runup_nodes)
+        for (const RunupNode &node : runup_nodes)
           {
-            const unsigned int kz = kx + 2;
-            const double       rx = node_points[kx][0] + U[kx] - axle[0];
-            const double       rz = node_points[kx][2] + U[kz] - axle[2];
+            const unsigned int kx = node.dof, kz = kx + 2;
+            const double       rx = node.x + U[kx] - axle[0];
+            const double       rz = node.z + U[kz] - axle[2];
             s[0] += M[kx];
             s[2] += M[kx] * rz;
             s[4] += M[kx] * rz * rz;
@@ -109,11 +109,11 @@ namespace WheelRail
           }
         // the reference motion: the centre of mass with the axle, rotation
         // omega about it
-        for (const unsigned int kx : runup_nodes)
+        for (const RunupNode &node : runup_nodes)
           {
-            const unsigned int kz = kx + 2;
-            const double       rx = node_points[kx][0] + U[kx] - axle[0];
-            const double       rz = node_points[kx][2] + U[kz] - axle[2];
+            const unsigned int kx = node.dof, kz = kx + 2;
+            const double       rx = node.x + U[kx] - axle[0];
+            const double       rz = node.z + U[kz] - axle[2];
             {
               const double vr = Va[0] + omega * (rz - rcz);
               const double w  = Vcx - Va[0] + dOmega * (rz - rcz);

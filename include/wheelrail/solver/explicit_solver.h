@@ -256,11 +256,17 @@ namespace WheelRail
                      const bool   first) const;
 
     std::vector<unsigned int> bore_dofs;
-    /** The x DoFs of the wheel's locally owned nodes (add_runup_damping()). */
-    std::vector<unsigned int> runup_nodes;
-    VectorType                inv_mass; ///< 0 on constrained and prescribed DoFs
-    VectorType                f_ext;    ///< gravity, condensed
-    VectorType                u0;       ///< displacement at the start
+    /** A locally owned node of the wheel: its reference x and z and its x
+     *  DoF (add_runup_damping()). */
+    struct RunupNode
+    {
+      double       x, z;
+      unsigned int dof;
+    };
+    std::vector<RunupNode> runup_nodes;
+    VectorType             inv_mass; ///< 0 on constrained and prescribed DoFs
+    VectorType             f_ext;    ///< gravity, condensed
+    VectorType             u0;       ///< displacement at the start
     /** f_ext while a static start adds the centrifugal load to it */
     VectorType f_ext_without_centrifugal;
     /** The update from per-node mass data where the DoFs allow it; prepared
