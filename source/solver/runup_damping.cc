@@ -62,7 +62,16 @@ namespace WheelRail
       return 0.;
     };
 
-    double power = 0, rigid_power = 0;
+    // the damping force on DoF k, alpha m (damped velocity w), with its
+    // power on the motion relative to the rigid one (velocity vr) and on
+    // the rigid motion
+    double     power = 0, rigid_power = 0;
+    const auto damp = [&](const unsigned int k, const double vr, const double w) {
+      const double fd = alpha * M[k] * w;
+      F[k] += fd;
+      power += fd * (V[k] - vr);
+      rigid_power -= fd * vr;
+    };
     if (rigid)
       {
         // the wheel's mass, centre of mass (relative to the axle), momentum,
@@ -114,22 +123,8 @@ namespace WheelRail
             const unsigned int kx = node.dof, kz = kx + 2;
             const double       rx = node.x + U[kx] - axle[0];
             const double       rz = node.z + U[kz] - axle[2];
-            {
-              const double vr = Va[0] + omega * (rz - rcz);
-              const double w  = Vcx - Va[0] + dOmega * (rz - rcz);
-              const double fd = alpha * M[kx] * w;
-              F[kx] += fd;
-              power += fd * (V[kx] - vr);
-              rigid_power -= fd * vr;
-            }
-            {
-              const double vr = Va[2] - omega * (rx - rcx);
-              const double w  = Vcz - Va[2] - dOmega * (rx - rcx);
-              const double fd = alpha * M[kz] * w;
-              F[kz] += fd;
-              power += fd * (V[kz] - vr);
-              rigid_power -= fd * vr;
-            }
+            damp(kx, Va[0] + omega * (rz - rcz), Vcx - Va[0] + dOmega * (rz - rcz));
+            damp(kz, Va[2] - omega * (rx - rcx), Vcz - Va[2] - dOmega * (rx - rcx));
           }
         work = h * rigid_power;
         return power;
@@ -140,11 +135,7 @@ namespace WheelRail
         const bool   wheel = node_material[k] == Geometry::MaterialIds::wheel;
         double       rx, rz;
         const double vr = wheel ? rigid_velocity(k, rx, rz) : 0.;
-        const double w  = V[k] - vr;
-        const double fd = alpha * M[k] * w;
-        F[k] += fd;
-        power += fd * (V[k] - vr);
-        rigid_power -= fd * vr;
+        damp(k, vr, V[k] - vr);
       }
     work = h * rigid_power;
     return power;
