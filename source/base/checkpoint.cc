@@ -206,10 +206,11 @@ namespace WheelRail
 
 
     void
-    compare_parameters(const std::string   &old_record,
-                       const std::string   &new_record,
-                       std::vector<Change> &allowed,
-                       std::vector<Change> &refused)
+    compare_parameters(const std::string           &old_record,
+                       const std::string           &new_record,
+                       std::vector<Change>         &allowed,
+                       std::vector<Change>         &refused,
+                       const std::set<std::string> &may_differ)
     {
       const auto            old_entries = parameter_entries(old_record);
       const auto            new_entries = parameter_entries(new_record);
@@ -226,9 +227,16 @@ namespace WheelRail
           const std::string new_value = n == new_entries.end() ? none : n->second;
           if (same_value(old_value, new_value))
             continue;
-          (resumable_entries().count(key) ? allowed : refused)
-            .push_back({key, old_value, new_value});
+          (may_differ.count(key) ? allowed : refused).push_back({key, old_value, new_value});
         }
+    }
+
+
+
+    std::string
+    rank_file(const std::string &directory, const unsigned int rank)
+    {
+      return directory + "/rank_" + std::to_string(rank) + ".bin";
     }
   } // namespace Checkpoint
 } // namespace WheelRail

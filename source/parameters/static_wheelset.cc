@@ -193,6 +193,20 @@ namespace WheelRail
                       "Before the explicit run, find the static equilibrium at A "
                       "(wheel on the rail under gravity and the static load) with "
                       "the implicit contact solve.");
+    prm.declare_entry("Static start state",
+                      "",
+                      Patterns::Anything(),
+                      "A directory for the state of the static start (with Static "
+                      "start = true): a run finds it there when an earlier run of the "
+                      "same static problem wrote it, and skips the implicit solve; "
+                      "otherwise the run solves and writes it. The static problem is "
+                      "every entry but those that act only once the wheel rolls "
+                      "(friction, creepage and torque control, run-up damping, "
+                      "initial conditions, End time) and those of the output: a state "
+                      "written with another value of any other entry, another rank "
+                      "count or mesh stops the run naming them. For the runs of a "
+                      "creep curve or a traction sweep (scripts/creep_curve.py, "
+                      "sweep.py). Empty: always solved, nothing written.");
     prm.leave_subsection();
   }
 
@@ -216,6 +230,7 @@ namespace WheelRail
     runup_time            = prm.get_double("Run-up time");
     runup_damping_shape   = prm.get("Run-up damping shape");
     static_start          = prm.get_bool("Static start");
+    static_start_state    = prm.get("Static start state");
     prm.leave_subsection();
   }
 } // namespace WheelRail

@@ -21,17 +21,6 @@ namespace WheelRail
 {
   using Report::fmt;
 
-  namespace
-  {
-    std::string
-    rank_file(const std::string &directory, const unsigned int rank)
-    {
-      return directory + "/rank_" + std::to_string(rank) + ".bin";
-    }
-  } // namespace
-
-
-
   template <class Archive>
   void
   Simulator::serialize(Archive &ar)
@@ -84,7 +73,7 @@ namespace WheelRail
     MPI_Barrier(mpi_communicator);
     int ok = 1;
     {
-      std::ofstream      file(rank_file(fresh, rank), std::ios::binary);
+      std::ofstream      file(Checkpoint::rank_file(fresh, rank), std::ios::binary);
       Checkpoint::Writer out(file);
       Checkpoint::Header header;
       header.ranks      = ranks;
@@ -134,7 +123,7 @@ namespace WheelRail
     if (!std::filesystem::exists(checkpoint_directory + "/info") &&
         std::filesystem::exists(output_directory + "/checkpoint.old/info"))
       checkpoint_directory = output_directory + "/checkpoint.old";
-    const std::string name = rank_file(checkpoint_directory, rank);
+    const std::string name = Checkpoint::rank_file(checkpoint_directory, rank);
 
     // each rank its own file; the first rank with a problem tells, but
     // another rank count comes first (rank 0's file says)
@@ -204,7 +193,7 @@ namespace WheelRail
     const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     // check_checkpoint() has verified the files and set the directory
-    const std::string name = rank_file(checkpoint_directory, rank);
+    const std::string name = Checkpoint::rank_file(checkpoint_directory, rank);
     std::ifstream     file(name, std::ios::binary);
     AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
     Checkpoint::Reader       in(file, name);

@@ -183,13 +183,20 @@ namespace WheelRail
     if (parameters.wheelset.static_start)
       {
         AssertThrow(contact, ExcMessage("Wheelset/Static start needs Contact/Enabled = true."));
-        Timer timer;
-        // the wheel of the rolling run spins: include its centrifugal load
-        const double omega = parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
-        solver->add_centrifugal_load(centre, omega);
-        StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
-        const StaticResult  r = statics.solve(wheelset->static_load(), solver_log());
-        solver->remove_centrifugal_load();
+        Timer        timer;
+        StaticResult r;
+        const bool   read = read_static_start(r);
+        if (!read)
+          {
+            // the wheel of the rolling run spins: include its centrifugal load
+            const double omega =
+              parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
+            solver->add_centrifugal_load(centre, omega);
+            StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
+            r = statics.solve(wheelset->static_load(), solver_log());
+            solver->remove_centrifugal_load();
+            write_static_start(r);
+          }
         axle[2] -= r.axle_displacement;
         // rolling radius: axle height above the contact points
         double fz = 0, z = 0;
@@ -206,10 +213,13 @@ namespace WheelRail
               << fmt(r.axle_displacement * 1e6, 5) << " um, " << contact->summary().n_contact
               << " contact nodes, penetration " << fmt(contact->summary().max_penetration * 1e6, 4)
               << " um";
-        if (!parameters.problem.test_mode)
+        if (!parameters.problem.test_mode && !read)
           pcout << " (" << r.newton_iterations << " Newton, " << r.linear_iterations
                 << " CG iterations, " << fmt(timer.wall_time(), 3) << " s)";
         pcout << std::endl;
+        if (!parameters.wheelset.static_start_state.empty())
+          pcout << "  static start " << (read ? "read from " : "written to ")
+                << parameters.wheelset.static_start_state << "/" << std::endl;
       }
     wheelset->start_rolling(axle, radius);
     pcout << "Rolling: V = " << fmt(parameters.wheelset.rolling_speed) << " m/s, rolling radius "

@@ -266,13 +266,18 @@ namespace WheelRail
 
     /** Differences between the parameter records @p old_record and
      *  @p new_record (ShortPRM text): @p allowed gets those listed in
-     *  resumable_entries(), @p refused all others (an entry present in
-     *  only one of them has the value "(not declared)" in the other). */
+     *  @p may_differ, @p refused all others (an entry present in only one
+     *  of them has the value "(not declared)" in the other). */
     void
-    compare_parameters(const std::string   &old_record,
-                       const std::string   &new_record,
-                       std::vector<Change> &allowed,
-                       std::vector<Change> &refused);
+    compare_parameters(const std::string           &old_record,
+                       const std::string           &new_record,
+                       std::vector<Change>         &allowed,
+                       std::vector<Change>         &refused,
+                       const std::set<std::string> &may_differ = resumable_entries());
+
+    /** The file of rank @p rank in the state directory @p directory. */
+    std::string
+    rank_file(const std::string &directory, const unsigned int rank);
   } // namespace Checkpoint
 } // namespace WheelRail
 

@@ -229,6 +229,9 @@ namespace WheelRail
      *  rigid-motion part over the wheel), see add_runup_damping() */
     std::string runup_damping_shape;
     bool        static_start;
+    /** Directory of the static start's state: read if there, else
+     *  written ("": neither) */
+    std::string static_start_state;
 
     static void
     declare_parameters(ParameterHandler &prm);

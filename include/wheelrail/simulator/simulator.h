@@ -40,6 +40,8 @@
 
 namespace WheelRail
 {
+  struct StaticResult;
+
   /**
    * Runs one case. run() follows SPEC 5 as far as the explicit core goes:
    * build mesh and solver, print the setup summary, then either a static
@@ -80,6 +82,18 @@ namespace WheelRail
     start_wheelset();
     void
     apply_initial_conditions();
+
+    // static_start_state.cc
+    /** The static start from Wheelset/Static start state, if a run of the
+     *  same static problem wrote it there: the solver's and the contact's
+     *  state and @p result. False if there is none (or no directory is
+     *  set); a state that does not fit this run stops it, naming why. */
+    bool
+    read_static_start(StaticResult &result);
+    /** The static start just solved into Wheelset/Static start state
+     *  (written beside it, then renamed: a reader sees all or nothing). */
+    void
+    write_static_start(const StaticResult &result);
 
     // time_loop.cc
     /** Create the postprocessors (the probes first: a probe point outside
