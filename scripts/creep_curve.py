@@ -4,7 +4,8 @@
 Usage:
     scripts/creep_curve.py CASE.prm [--creepages LIST | --levels LIST] [--np N]
                            [--out DIR] [--window MM] [--runup-damping ALPHA]
-                           [--hs-grid NXxNY] [--wheelrail PATH] [--plot-only] [--check]
+                           [--hs-grid NXxNY] [--wheelrail PATH] [--solve-each-static-start]
+                           [--plot-only] [--check]
 
 CASE.prm is any rolling case (the paper cases, prm/default.prm, ...). For each
 creepage xi the case is run with the creepage held for the whole run
@@ -16,6 +17,9 @@ about critical for the wheel's 680 Hz torsional mode; doc/convergence.md):
 that is what makes the traction steady within a few tens of mm of rolling. A
 torque-driven case needs the wheelset's spin-up (a lag of about 1 ms) and its
 torsional vibration to die out first, which takes longer than the runs last.
+The runs share one static start (the first solves it, the others read it:
+Wheelset/Static start state = DIR/static_start, removed after the runs) unless
+--solve-each-static-start.
 
 --creepages gives xi directly (driving: xi < 0); --levels gives F_x / F_N
 targets instead, and xi is taken from the half-space creep curve of the case's
@@ -54,6 +58,7 @@ file hold the same finite rows and that the figure shows the half-space curve
 """
 import argparse
 import os
+import shutil
 import sys
 import time
 
@@ -276,6 +281,9 @@ def main():
     parser.add_argument("--hs-grid", default="48x33", help="half-space elements NXxNY (NY odd)")
     parser.add_argument("--wheelrail", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                                             "..", "build", "wheelrail"))
+    parser.add_argument("--solve-each-static-start", action="store_true",
+                        help="every run solves its static start (default: the first run solves it, "
+                             "the others read it, Wheelset/Static start state)")
     parser.add_argument("--plot-only", action="store_true")
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
@@ -321,6 +329,11 @@ def main():
             sets["Wheelset"].update({"Run-up damping": "%g" % args.runup_damping,
                                      "Run-up damping shape": "wheel rigid motion",
                                      "Run-up time": "1"})
+        # the runs differ in creepage only: one static start
+        state = None if args.solve_each_static_start else os.path.join(out, "static_start")
+        if state:
+            shutil.rmtree(state, ignore_errors=True)
+            sets["Wheelset"]["Static start state"] = os.path.abspath(state)
         for k, xi in enumerate(xis, 1):
             path = os.path.join(out, "xi_%d" % k)
             sets["Wheelset"]["Initial creepage"] = "%.6g" % xi
@@ -331,6 +344,8 @@ def main():
             sweep.run_case(path + ".prm", args.np, args.wheelrail, path + ".log", "creep_curve.py")
             print("  %.0f s" % (time.time() - t0), flush=True)
             runs.append(path)
+        if state:
+            shutil.rmtree(state, ignore_errors=True)
     if not runs:
         fail("no runs in %s" % out)
 

@@ -4,13 +4,15 @@
 Usage:
     scripts/sweep.py BASE.prm [--mu 0.1,0.2,0.3,0.4,0.5] [--laws constant,exponential]
                      [--np N] [--out DIR] [--wheelrail PATH] [--hs-grid 32x17]
-                     [--plot-only] [--check]
+                     [--solve-each-static-start] [--plot-only] [--check]
 
 For every friction law and nominal traction coefficient mu_n, a case file
 DIR/LAW_muNN.prm is written (it includes BASE.prm and sets the law, the
 coefficients of SPEC 4 - constant: f = 0.5; exponential: f_S = 0.5,
 f_D = 0.32, k = 6 s/m - mu_n and its output directory) and run, one after
-another, on N MPI ranks. Then DIR holds:
+another, on N MPI ranks. The runs share one static start (the first solves
+it, the others read it: Wheelset/Static start state = DIR/static_start,
+removed after the runs) unless --solve-each-static-start. Then DIR holds:
 
   sweep.csv                 law, mu_n, mean mu_a and F_N over the second half
                             of each run, mu_a at the end
@@ -38,6 +40,7 @@ status 1 if not).
 import argparse
 import html
 import os
+import shutil
 import subprocess
 import sys
 import time
@@ -63,7 +66,10 @@ def case_name(law, mu):
     return "%s_mu%02d" % (law, round(mu * 100))
 
 
-def write_case(base, out, law, mu):
+def write_case(base, out, law, mu, state=None):
+    """The case file of one run; with @p state the runs share one static
+    start there (Wheelset/Static start state: the first run solves and
+    writes it, the others read it)."""
     name = case_name(law, mu)
     lines = ["# wheelrail sweep case: %s law, mu_n = %g (written by scripts/sweep.py)" % (law, mu),
              "include %s" % os.path.abspath(base),
@@ -72,7 +78,10 @@ def write_case(base, out, law, mu):
              "end",
              "subsection Contact"]
     lines += ["  set %s = %s" % kv for kv in LAWS[law].items()]
-    lines += ["end", "subsection Wheelset", "  set Nominal traction coefficient = %g" % mu, "end", ""]
+    lines += ["end", "subsection Wheelset", "  set Nominal traction coefficient = %g" % mu]
+    if state:
+        lines.append("  set Static start state = %s" % os.path.abspath(state))
+    lines += ["end", ""]
     path = os.path.join(out, name + ".prm")
     with open(path, "w") as f:
         f.write("\n".join(lines))
@@ -176,6 +185,9 @@ def main():
                                                             "..", "build", "wheelrail"))
     parser.add_argument("--hs-grid", default="%dx%d" % hc.DEFAULT_GRID,
                         help="half-space elements NXxNY of the creep curve (NY odd)")
+    parser.add_argument("--solve-each-static-start", action="store_true",
+                        help="every run solves its static start (default: the first run solves it, "
+                             "the others read it, Wheelset/Static start state)")
     parser.add_argument("--plot-only", action="store_true")
     parser.add_argument("--check", action="store_true")
     args = parser.parse_args()
@@ -192,14 +204,20 @@ def main():
         sys.exit("sweep.py: no such parameter file: %s" % args.base)
     os.makedirs(args.out, exist_ok=True)
 
+    # the runs differ in friction and traction only: one static start
+    state = None if args.solve_each_static_start else os.path.join(args.out, "static_start")
+    if state and not args.plot_only:
+        shutil.rmtree(state, ignore_errors=True)
     runs = []
     for law in laws:
         for mu in mus:
-            prm, run = write_case(args.base, args.out, law, mu)
+            prm, run = write_case(args.base, args.out, law, mu, state)
             if not args.plot_only:
                 print("sweep.py: running %s" % prm, flush=True)
                 run_case(prm, args.np, args.wheelrail, run + ".log")
             runs.append((law, mu, run))
+    if state:
+        shutil.rmtree(state, ignore_errors=True)
 
     rows = []
     for law, mu, run in runs:

@@ -86,7 +86,12 @@ namespace WheelRail
   Simulator::read_static_start(StaticResult &result)
   {
     const std::string &directory = parameters.wheelset.static_start_state;
-    if (directory.empty() || !std::filesystem::exists(directory + "/info"))
+    if (directory.empty())
+      return false;
+    AssertThrow(!std::filesystem::exists(directory) || std::filesystem::exists(directory + "/info"),
+                ExcMessage("Wheelset/Static start state: '" + directory +
+                           "' exists and holds no static start; name a new directory."));
+    if (!std::filesystem::exists(directory + "/info"))
       return false;
     const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
