@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <wheelrail/base/checkpoint.h>
 
 #include <algorithm>
@@ -237,6 +239,25 @@ namespace WheelRail
     rank_file(const std::string &directory, const unsigned int rank)
     {
       return directory + "/rank_" + std::to_string(rank) + ".bin";
+    }
+
+
+
+    RankHeader
+    read_rank_header(const std::string &directory, MPI_Comm comm)
+    {
+      RankHeader        r;
+      const std::string name = rank_file(directory, dealii::Utilities::MPI::this_mpi_process(comm));
+      r.error                = verify(name);
+      if (r.error.empty())
+        {
+          std::ifstream file(name, std::ios::binary);
+          Reader        in(file, name);
+          r.header = read_header(in, name);
+        }
+      r.ranks_of_0 =
+        dealii::Utilities::MPI::broadcast(comm, r.error.empty() ? r.header.ranks : 0u, 0);
+      return r;
     }
   } // namespace Checkpoint
 } // namespace WheelRail

@@ -54,6 +54,22 @@ namespace WheelRail
 
 
 
+  Checkpoint::Header
+  Simulator::state_header() const
+  {
+    Checkpoint::Header header;
+    header.ranks      = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    header.cells      = triangulation.n_global_active_cells();
+    header.dofs       = solver->get_dof_handler().n_dofs();
+    header.step       = solver->step_number();
+    header.time       = solver->time();
+    header.time_step  = solver->time_step();
+    header.parameters = parameter_record;
+    return header;
+  }
+
+
+
   void
   Simulator::write_checkpoint()
   {
@@ -75,15 +91,7 @@ namespace WheelRail
     {
       std::ofstream      file(Checkpoint::rank_file(fresh, rank), std::ios::binary);
       Checkpoint::Writer out(file);
-      Checkpoint::Header header;
-      header.ranks      = ranks;
-      header.cells      = triangulation.n_global_active_cells();
-      header.dofs       = solver->get_dof_handler().n_dofs();
-      header.step       = solver->step_number();
-      header.time       = solver->time();
-      header.time_step  = solver->time_step();
-      header.parameters = parameter_record;
-      Checkpoint::write_header(out, header);
+      Checkpoint::write_header(out, state_header());
       serialize(out);
       out.pod(Checkpoint::magic);
       out.finish();
@@ -116,27 +124,16 @@ namespace WheelRail
   void
   Simulator::check_checkpoint()
   {
-    const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     // checkpoint.old exists only if a run died between the two renames
     checkpoint_directory = output_directory + "/checkpoint";
     if (!std::filesystem::exists(checkpoint_directory + "/info") &&
         std::filesystem::exists(output_directory + "/checkpoint.old/info"))
       checkpoint_directory = output_directory + "/checkpoint.old";
-    const std::string name = Checkpoint::rank_file(checkpoint_directory, rank);
-
     // each rank its own file; the first rank with a problem tells, but
     // another rank count comes first (rank 0's file says)
-    std::string        error = Checkpoint::verify(name);
-    Checkpoint::Header header;
-    if (error.empty())
-      {
-        std::ifstream      file(name, std::ios::binary);
-        Checkpoint::Reader in(file, name);
-        header = Checkpoint::read_header(in, name);
-      }
-    const unsigned int stored_ranks =
-      Utilities::MPI::broadcast(mpi_communicator, error.empty() ? header.ranks : 0u, 0);
+    auto [header, error, stored_ranks] =
+      Checkpoint::read_rank_header(checkpoint_directory, mpi_communicator);
     if (stored_ranks != 0 && stored_ranks != ranks)
       error = "the checkpoint in '" + checkpoint_directory + "' was written by " +
               std::to_string(stored_ranks) + " MPI rank(s); resume it with as many (this run has " +

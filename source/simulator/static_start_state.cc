@@ -98,16 +98,7 @@ namespace WheelRail
     const std::string  name  = Checkpoint::rank_file(directory, rank);
     const std::string  where = "Wheelset/Static start state: the state in '" + directory + "'";
 
-    std::string        error = Checkpoint::verify(name);
-    Checkpoint::Header header;
-    if (error.empty())
-      {
-        std::ifstream      file(name, std::ios::binary);
-        Checkpoint::Reader in(file, name);
-        header = Checkpoint::read_header(in, name);
-      }
-    const unsigned int stored_ranks =
-      Utilities::MPI::broadcast(mpi_communicator, error.empty() ? header.ranks : 0u, 0);
+    auto [header, error, stored_ranks] = Checkpoint::read_rank_header(directory, mpi_communicator);
     if (stored_ranks != 0 && stored_ranks != ranks)
       error = where + " was written by " + std::to_string(stored_ranks) +
               " MPI rank(s); this run has " + std::to_string(ranks) +
@@ -182,13 +173,7 @@ namespace WheelRail
     {
       std::ofstream      file(Checkpoint::rank_file(fresh, rank), std::ios::binary);
       Checkpoint::Writer out(file);
-      Checkpoint::Header header;
-      header.ranks      = ranks;
-      header.cells      = triangulation.n_global_active_cells();
-      header.dofs       = solver->get_dof_handler().n_dofs();
-      header.time_step  = solver->time_step();
-      header.parameters = parameter_record;
-      Checkpoint::write_header(out, header);
+      Checkpoint::write_header(out, state_header());
       solver->serialize(out);
       contact->serialize(out);
       StaticResult r = result;

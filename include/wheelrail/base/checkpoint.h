@@ -17,6 +17,7 @@
 #define wheelrail_checkpoint_h
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 
 #include <boost/crc.hpp>
@@ -278,6 +279,20 @@ namespace WheelRail
     /** The file of rank @p rank in the state directory @p directory. */
     std::string
     rank_file(const std::string &directory, const unsigned int rank);
+
+    /** What read_rank_header() found. */
+    struct RankHeader
+    {
+      Header       header;         ///< of this rank's file (if no error)
+      std::string  error;          ///< why this rank's file cannot be read, naming it
+      unsigned int ranks_of_0 = 0; ///< rank count in rank 0's file, 0 if unreadable
+    };
+
+    /** verify() this rank's file in @p directory and read its header; the
+     *  rank count that rank 0's file gives (a state written by another
+     *  rank count is refused for that before anything else). */
+    RankHeader
+    read_rank_header(const std::string &directory, MPI_Comm comm);
   } // namespace Checkpoint
 } // namespace WheelRail
 

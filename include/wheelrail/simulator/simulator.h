@@ -18,6 +18,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <wheelrail/base/checkpoint.h>
 #include <wheelrail/contact/penalty_contact.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/postprocess/contact_patch.h>
@@ -152,6 +153,10 @@ namespace WheelRail
     /** Read the state back (wheelrail CASE.prm --resume). */
     void
     read_checkpoint();
+    /** The header of this rank's file of the run state now: rank count,
+     *  mesh size, step, time, time step and the parameter record. */
+    Checkpoint::Header
+    state_header() const;
     /** The run state after the header, in the order of the checkpoint
      *  format: solver, contact, wheelset, postprocessors. */
     template <class Archive>
