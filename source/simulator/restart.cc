@@ -87,18 +87,11 @@ namespace WheelRail
         std::filesystem::create_directories(fresh);
       }
     MPI_Barrier(mpi_communicator);
-    int ok = 1;
-    {
-      std::ofstream      file(Checkpoint::rank_file(fresh, rank), std::ios::binary);
-      Checkpoint::Writer out(file);
-      Checkpoint::write_header(out, state_header());
-      serialize(out);
-      out.pod(Checkpoint::magic);
-      out.finish();
-      file.flush();
-      ok = file.good() ? 1 : 0;
-    }
-    ok = Utilities::MPI::min(ok, mpi_communicator);
+    const bool written =
+      Checkpoint::write_rank_file(Checkpoint::rank_file(fresh, rank),
+                                  state_header(),
+                                  [this](Checkpoint::Writer &out) { serialize(out); });
+    const int ok = Utilities::MPI::min(written ? 1 : 0, mpi_communicator);
     AssertThrow(ok,
                 ExcMessage("Cannot write the checkpoint in '" + fresh +
                            "' (disk full or no permission); the previous checkpoint is kept."));

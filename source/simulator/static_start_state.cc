@@ -169,21 +169,15 @@ namespace WheelRail
       }
     throw_first_error(error, mpi_communicator);
 
-    int ok = 1;
-    {
-      std::ofstream      file(Checkpoint::rank_file(fresh, rank), std::ios::binary);
-      Checkpoint::Writer out(file);
-      Checkpoint::write_header(out, state_header());
-      solver->serialize(out);
-      contact->serialize(out);
-      StaticResult r = result;
-      serialize_result(out, r);
-      out.pod(Checkpoint::magic);
-      out.finish();
-      file.flush();
-      ok = file.good() ? 1 : 0;
-    }
-    ok = Utilities::MPI::min(ok, mpi_communicator);
+    const bool written = Checkpoint::write_rank_file(Checkpoint::rank_file(fresh, rank),
+                                                     state_header(),
+                                                     [&](Checkpoint::Writer &out) {
+                                                       solver->serialize(out);
+                                                       contact->serialize(out);
+                                                       StaticResult r = result;
+                                                       serialize_result(out, r);
+                                                     });
+    int        ok      = Utilities::MPI::min(written ? 1 : 0, mpi_communicator);
     if (rank == 0)
       {
         std::error_code ec;

@@ -23,6 +23,7 @@
 #include <boost/crc.hpp>
 
 #include <cstdint>
+#include <fstream>
 #include <istream>
 #include <map>
 #include <ostream>
@@ -236,6 +237,23 @@ namespace WheelRail
     /** Write the magic number and @p header. */
     void
     write_header(Writer &out, const Header &header);
+
+    /** Write the rank file @p name: @p header, what @p body(Writer &)
+     *  writes, the magic number and the trailer. Returns whether the file
+     *  is good after the flush (false: disk full or no permission). */
+    template <class Body>
+    bool
+    write_rank_file(const std::string &name, const Header &header, Body &&body)
+    {
+      std::ofstream file(name, std::ios::binary);
+      Writer        out(file);
+      write_header(out, header);
+      body(out);
+      out.pod(magic);
+      out.finish();
+      file.flush();
+      return file.good();
+    }
 
     /** Read what write_header() wrote (the magic number is checked). */
     Header
