@@ -130,42 +130,53 @@ namespace WheelRail
           prefetch_nodes(batch + node_prefetch_distance, U, V, F, with_damping);
         if (batch + 1 < n_batches)
           gather(batch + 1, slot ^ 1);
-        const double *u_batch = ub, *v_batch = vb;
-        if (family != numbers::invalid_unsigned_int)
+        const bool in_family = family != numbers::invalid_unsigned_int;
+        // the kernel once per part of the batch that its vector holds
+        typedef typename Data::vector V;
+        double                        batch_power = 0;
+        const auto                    run_parts   = [&](const auto &field_of) {
+#pragma GCC unroll 4
+          for (unsigned int lane = 0; lane < W; lane += lanes_of<V>)
+            {
+              const auto part = [&](auto damping) __attribute__((always_inline))
+              {
+                return batch_forces<decltype(damping)::value, with_energies>(
+                  Data{data.data, lane},
+                  lame_lambda,
+                  lame_mu,
+                  field_of(0, lane),
+                  field_of(1, lane),
+                  fb + lane,
+                  batch_power,
+                  &batch_energies,
+                  &batch_kappa_ref[std::size_t(batch) * W] + lane);
+              };
+              batch_power = with_damping ? part(std::true_type()) : part(std::false_type());
+            }
+        };
+        const auto batch_fields = [&](const double *u_batch, const double *v_batch) {
+          return [=](const unsigned int field, const unsigned int lane) {
+            return BatchField<V>{(field == 0 ? u_batch : v_batch) + lane};
+          };
+        };
+        if (!in_family)
+          run_parts(batch_fields(u_gathered[slot], v_gathered[slot]));
+        else if constexpr (WHEELRAIL_EIGHT_LANE_REGISTERS)
           {
             // each vertex's vector over the children by permutations of
             // the aligned grid vectors
             expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
             if (with_damping)
               expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
+            run_parts(batch_fields(ub, vb));
           }
         else
-          {
-            u_batch = u_gathered[slot];
-            v_batch = v_gathered[slot];
-          }
-        const double *kappa_ref = &batch_kappa_ref[std::size_t(batch) * W];
-        // the kernel once per part of the batch that its vector holds
-        double batch_power = 0;
-#pragma GCC unroll 4
-        for (unsigned int lane = 0; lane < W; lane += lanes_of<typename Data::vector>)
-          {
-            const auto part = [&](auto damping) __attribute__((always_inline))
-            {
-              return batch_forces<decltype(damping)::value, with_energies>(Data{data.data, lane},
-                                                                           lame_lambda,
-                                                                           lame_mu,
-                                                                           u_batch + lane,
-                                                                           v_batch + lane,
-                                                                           fb + lane,
-                                                                           batch_power,
-                                                                           &batch_energies,
-                                                                           kappa_ref + lane);
-            };
-            batch_power = with_damping ? part(std::true_type()) : part(std::false_type());
-          }
+          // narrower vectors read the grid values in place
+          run_parts([&](const unsigned int field, const unsigned int lane) {
+            return FamilyGridField<V>{field == 0 ? ug[slot] : vg[slot], lane};
+          });
         power += batch_power;
-        if (family != numbers::invalid_unsigned_int)
+        if (in_family)
           {
             scatter_family(F,
                            &family_nodes[std::size_t(family) * 27],

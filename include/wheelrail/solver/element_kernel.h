@@ -26,6 +26,7 @@
 #  define WHEELRAIL_EIGHT_LANE_REGISTERS 0
 #endif
 
+
 namespace WheelRail
 {
   namespace ElementKernel
@@ -162,6 +163,8 @@ namespace WheelRail
       const unsigned int lane = 0;
       /** The double kernel sums the gradient over all eight vertices. */
       static constexpr bool translation_free = false;
+      /** Element data read again where the kernel needs them again: a load. */
+      static constexpr bool reload_cheap = true;
       WHEELRAIL_ALWAYS_INLINE V
       b(const unsigned int a, const unsigned int j) const
       {
@@ -205,6 +208,9 @@ namespace WheelRail
       const double         *data;
       const unsigned int    lane             = 0;
       static constexpr bool translation_free = true;
+      /** Element data read again where the kernel needs them again: a
+       *  load and a conversion, which contends with the arithmetic. */
+      static constexpr bool reload_cheap = false;
       WHEELRAIL_ALWAYS_INLINE const float *
       geometry() const
       {
@@ -237,11 +243,46 @@ namespace WheelRail
       }
     };
 
-    /** Gradient sum_a w_a (x) b_a of the nodal field @p wb ([vertex][component][lane])
-     *  of a batch: H from the displacements, L from the velocities. */
-    template <typename Data, typename V = typename Data::vector>
+    /**
+     * Between the phases of the force kernel: the element data and nodal
+     * values that a phase reads again are loaded again, not kept from the
+     * phase before. With 16 vector registers (AVX2, SSE2) the compiler would
+     * otherwise keep every loaded b_a, c_alpha and u_a for its second use and
+     * move most of them to the stack and back (a store and a load where one
+     * load does). It orders no arithmetic: the results are the same bits.
+     * Nothing is done with 32 registers (AVX-512), nor where a second read
+     * costs a conversion (@p Data with single-precision geometry).
+     */
+    template <typename Data>
     WHEELRAIL_ALWAYS_INLINE void
-    batch_gradient(const Data &data, const double *__restrict wb, V (&G)[3][3])
+    reload_barrier()
+    {
+      if constexpr (!WHEELRAIL_EIGHT_LANE_REGISTERS && Data::reload_cheap)
+        asm volatile("" ::: "memory");
+    }
+
+    /**
+     * A nodal field of a batch stored as [vertex][component][lane] (W lanes
+     * per vector, from the first lane the kernel works on): the kernel
+     * reads vertex @p a's component @p i of its lanes as one vector. The
+     * families' grid values are read by FamilyGridField (family_batch.h).
+     */
+    template <typename V>
+    struct BatchField
+    {
+      const double *__restrict w;
+      WHEELRAIL_ALWAYS_INLINE V
+      operator()(const unsigned int a, const unsigned int i) const
+      {
+        return load<V>(w + (a * 3 + i) * W);
+      }
+    };
+
+    /** Gradient sum_a w_a (x) b_a of the nodal field @p w of a batch: H
+     *  from the displacements, L from the velocities. */
+    template <typename Data, typename Nodal, typename V = typename Data::vector>
+    WHEELRAIL_ALWAYS_INLINE void
+    batch_gradient(const Data &data, const Nodal &w, V (&G)[3][3])
     {
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)
@@ -258,9 +299,7 @@ namespace WheelRail
 #pragma GCC unroll 3
           for (unsigned int i = 0; i < 3; ++i)
             {
-              const V wa = Data::translation_free ?
-                             load<V>(wb + (a * 3 + i) * W) - load<V>(wb + i * W) :
-                             load<V>(wb + (a * 3 + i) * W);
+              const V wa = Data::translation_free ? w(a, i) - w(0, i) : w(a, i);
 #pragma GCC unroll 3
               for (unsigned int j = 0; j < 3; ++j)
                 G[i][j] += wa * b[j];
@@ -271,19 +310,19 @@ namespace WheelRail
 
 
     /** The four hourglass sums sum_a hg[alpha][a] w_a of the nodal field @p
-     *  wb ([vertex][component][lane]), component @p i, by a partial
+     *  w of a batch, component @p i, by a partial
      *  Walsh-Hadamard transform over the vertex bits (x, y, z): 18 additions
      *  instead of 28. */
-    template <typename V>
+    template <typename V, typename Nodal>
     WHEELRAIL_ALWAYS_INLINE void
-    hourglass_sums(const double *__restrict wb, const unsigned int i, V (&s)[4])
+    hourglass_sums(const Nodal &w, const unsigned int i, V (&s)[4])
     {
       V p[4], m[4];
 #pragma GCC unroll 4
       for (unsigned int k = 0; k < 4; ++k)
         {
-          const V w0 = load<V>(wb + (2 * k * 3 + i) * W);
-          const V w1 = load<V>(wb + ((2 * k + 1) * 3 + i) * W);
+          const V w0 = w(2 * k, i);
+          const V w1 = w(2 * k + 1, i);
           p[k]       = w0 + w1;
           m[k]       = w0 - w1;
         }
@@ -386,9 +425,10 @@ namespace WheelRail
     /**
      * Element forces of one batch of W cells: one-point total-Lagrangian
      * St. Venant-Kirchhoff stress, element stiffness damping and FB
-     * stiffness hourglass forces. u, v, f are [vertex][component][lane];
+     * stiffness hourglass forces. f is [vertex][component][lane];
      * every operation acts on all lanes of the vector at once, and all loops are
-     * unrolled so that the tensors stay in registers. The symmetric
+     * unrolled; the stress and hourglass forces are formed one force
+     * component at a time, so that few tensors are live at once. The symmetric
      * tensors (E, its rate, S) are formed from their six components, the
      * damping stress with the elastic one as S = C : (E + beta dE/dt), and
      * the hourglass sums and their forces by partial Walsh-Hadamard
@@ -401,21 +441,24 @@ namespace WheelRail
      * are the same bits either way.
      *
      * The kernel works on the lanes data.lane to data.lane +
-     * lanes_of<V> - 1 of the batch (all W where V is v8d): @p ub, @p vb,
-     * @p fb and @p kappa_ref start at that lane (the stride between fields
-     * stays W). It returns @p power_sum plus the damping power of its
+     * lanes_of<V> - 1 of the batch (all W where V is v8d): the nodal fields
+     * @p ub and @p vb (BatchField, FamilyGridField) give those lanes, @p fb
+     * and @p kappa_ref start at that lane (the stride between fields stays
+     * W). It returns @p power_sum plus the damping power of its
      * lanes, added lane by lane.
      */
     template <bool with_damping,
               bool with_energies = false,
               typename Data,
+              typename UField,
+              typename VField,
               typename V = typename Data::vector>
     WHEELRAIL_ALWAYS_INLINE double
-    batch_forces(const Data  &data,
-                 const double lambda,
-                 const double mu_,
-                 const double *__restrict ub,
-                 const double *__restrict vb,
+    batch_forces(const Data   &data,
+                 const double  lambda,
+                 const double  mu_,
+                 const UField &ub,
+                 const VField &vb,
                  double *__restrict fb,
                  double         power_sum = 0,
                  BatchEnergies *energies  = nullptr,
@@ -428,11 +471,9 @@ namespace WheelRail
 
       V H[3][3];
       batch_gradient(data, ub, H);
+      reload_barrier<Data>();
 
       constexpr const unsigned int(&si)[6] = sym_i, (&sj)[6] = sym_j;
-      V E[6];
-      green_lagrange(H, E);
-
       if constexpr (with_energies)
         {
           // E once more, from a copy of H that the compiler cannot see
@@ -452,12 +493,17 @@ namespace WheelRail
                     V0 * (0.5 * la * tr * tr + mu * symmetric_square(e)));
         }
 
+      // The rate of strain before the strain: H and L live together only
+      // while dE/dt is formed (the fewer tensors live at once, the fewer
+      // of them the compiler keeps on the stack with 16 vector registers).
       V power = {};
+      V E[6];
       if constexpr (with_damping)
         {
           const V beta = data.beta();
           V       L[3][3];
           batch_gradient(data, vb, L);
+          reload_barrier<Data>();
           // dE/dt = sym(F^T L), F = I + H
           V Ed[6];
 #pragma GCC unroll 6
@@ -472,10 +518,13 @@ namespace WheelRail
             }
           const V trEd = Ed[0] + Ed[1] + Ed[2];
           power        = beta * V0 * (la * trEd * trEd + 2. * mu * symmetric_square(Ed));
+          green_lagrange(H, E);
 #pragma GCC unroll 6
           for (unsigned int q = 0; q < 6; ++q)
             E[q] += beta * Ed[q];
         }
+      else
+        green_lagrange(H, E);
 
       const V trE = E[0] + E[1] + E[2];
       V       S[3][3];
@@ -487,66 +536,49 @@ namespace WheelRail
           S[sj[q]][si[q]] = sq;
         }
 
-      V                  g[4][3];
+      // The forces component by component: row i of the first
+      // Piola-Kirchhoff stress times V0 (T) and the four hourglass forces
+      // of component i need row i of H only, and give the forces' component
+      // i at all eight vertices.
       [[maybe_unused]] V modes = {}; // the squared hourglass modes summed (energies)
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)
         {
-          V s[4];
+          reload_barrier<Data>();
+          V s[4], g[4];
           hourglass_sums(ub, i, s);
 #pragma GCC unroll 4
           for (unsigned int al = 0; al < 4; ++al)
             {
               const V c0 = data.c(al, 0), c1 = data.c(al, 1), c2 = data.c(al, 2);
               const V mode = s[al] - (c0 * H[i][0] + c1 * H[i][1] + c2 * H[i][2]);
-              g[al][i]     = ka * mode;
+              g[al]        = ka * mode;
               if constexpr (with_energies)
                 modes += mode * mode;
             }
+          V T[3];
+#pragma GCC unroll 3
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              V fs = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
+              T[j] = V0 * fs;
+            }
+#pragma GCC unroll 4
+          for (unsigned int al = 0; al < 4; ++al)
+#pragma GCC unroll 3
+            for (unsigned int j = 0; j < 3; ++j)
+              T[j] -= g[al] * data.c(al, j);
+          const HourglassSpread<V> spread{g[0], g[1], g[2], g[3]};
+#pragma GCC unroll 8
+          for (unsigned int a = 0; a < 8; ++a)
+            store(fb + (a * 3 + i) * W,
+                  spread.add_to(a,
+                                T[0] * data.b(a, 0) + T[1] * data.b(a, 1) + T[2] * data.b(a, 2)));
         }
       if constexpr (with_energies)
         {
           add_lanes(energies->hourglass + data.lane, 0.5 * ka * modes);
           add_lanes(energies->hourglass_reference + data.lane, 0.5 * load<V>(kappa_ref) * modes);
-        }
-
-      V T[3][3];
-#pragma GCC unroll 3
-      for (unsigned int i = 0; i < 3; ++i)
-#pragma GCC unroll 3
-        for (unsigned int j = 0; j < 3; ++j)
-          {
-            V fs    = S[i][j] + H[i][0] * S[0][j] + H[i][1] * S[1][j] + H[i][2] * S[2][j];
-            T[i][j] = V0 * fs;
-          }
-#pragma GCC unroll 4
-      for (unsigned int al = 0; al < 4; ++al)
-        {
-          V c[3];
-#pragma GCC unroll 3
-          for (unsigned int j = 0; j < 3; ++j)
-            c[j] = data.c(al, j);
-#pragma GCC unroll 3
-          for (unsigned int i = 0; i < 3; ++i)
-#pragma GCC unroll 3
-            for (unsigned int j = 0; j < 3; ++j)
-              T[i][j] -= g[al][i] * c[j];
-        }
-
-      const HourglassSpread<V> spread[3] = {{g[0][0], g[1][0], g[2][0], g[3][0]},
-                                            {g[0][1], g[1][1], g[2][1], g[3][1]},
-                                            {g[0][2], g[1][2], g[2][2], g[3][2]}};
-#pragma GCC unroll 8
-      for (unsigned int a = 0; a < 8; ++a)
-        {
-          V b[3];
-#pragma GCC unroll 3
-          for (unsigned int j = 0; j < 3; ++j)
-            b[j] = data.b(a, j);
-#pragma GCC unroll 3
-          for (unsigned int i = 0; i < 3; ++i)
-            store(fb + (a * 3 + i) * W,
-                  spread[i].add_to(a, T[i][0] * b[0] + T[i][1] * b[1] + T[i][2] * b[2]));
         }
       for (unsigned int l = 0; l < lanes_of<V>; ++l)
         power_sum += power[l];

@@ -116,7 +116,32 @@ namespace WheelRail
 #endif
     }
 
-    typedef double v4d __attribute__((vector_size(32)));
+    /**
+     * A family's nodal field read by the kernel straight from its grid
+     * values @p g ([component][32]) where its vector is narrower than W:
+     * lanes l .. l + 3 of vertex a are the grid values o + {0, 1, 3, 4}
+     * with o = family_offset[a] + family_offset[l] (l = 0, 4), two pairs of
+     * neighbours (one pair for 2 lanes). Two 2-lane loads and one insert
+     * per vector, and no vertex vectors stored: the values are moved, not
+     * combined, as by expand_family().
+     */
+    template <typename V>
+    struct FamilyGridField
+    {
+      const double (*g)[32];
+      unsigned int lane;
+      WHEELRAIL_ALWAYS_INLINE V
+      operator()(const unsigned int a, const unsigned int i) const
+      {
+        static_assert(lanes_of<V> == 2 || lanes_of<V> == 4, "pairs of neighbours");
+        const double *p = g[i] + family_offset[a] + family_offset[lane];
+        if constexpr (lanes_of<V> == 2)
+          return load<v2d>(p);
+        else
+          return __builtin_shufflevector(load<v2d>(p), load<v2d>(p + 3), 0, 1, 2, 3);
+      }
+    };
+
 
     /** The nodal values of a family's 27 grid nodes @p grid (x-DoF
      *  indices into @p X, node-blocked) per component, @p g[d][n], by
