@@ -26,7 +26,6 @@
 #  define WHEELRAIL_EIGHT_LANE_REGISTERS 0
 #endif
 
-
 namespace WheelRail
 {
   namespace ElementKernel

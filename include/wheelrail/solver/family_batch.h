@@ -11,8 +11,9 @@
  *
  * The permutations act on whole 8-lane vectors where the target has 8-lane
  * registers (AVX-512). Elsewhere (AVX2, SSE2) the compiler would take such
- * a permutation apart value by value through the stack, so the same values
- * are moved by scalar copies and the grid sums added by scalar additions in
+ * a permutation apart value by value through the stack, so the kernel reads
+ * the grid values in place (FamilyGridField), and the same values are
+ * gathered by scalar copies and the grid sums added by scalar additions in
  * the same order: the same bits either way.
  */
 #ifndef wheelrail_solver_family_batch_h
@@ -96,24 +97,15 @@ namespace WheelRail
     }
 
     /** A family's vertex vectors @p wb ([vertex][component][lane]) from its
-     *  grid values @p g ([component][32], aligned). */
+     *  grid values @p g ([component][32], aligned), for 8-lane registers;
+     *  narrower vectors read the grid values in place (FamilyGridField). */
     template <unsigned int... a>
     WHEELRAIL_ALWAYS_INLINE void
     expand_family(const double (&g)[3][32], double *wb, std::integer_sequence<unsigned int, a...>)
     {
-#if WHEELRAIL_EIGHT_LANE_REGISTERS
-#  pragma GCC unroll 3
+#pragma GCC unroll 3
       for (unsigned int d = 0; d < 3; ++d)
         (store(wb + (a * 3 + d) * W, expand_vertex<a>(g[d])), ...);
-#else
-#  pragma GCC unroll 3
-      for (unsigned int d = 0; d < 3; ++d)
-#  pragma GCC unroll 8
-        for (unsigned int v = 0; v < 8; ++v)
-#  pragma GCC unroll 8
-          for (unsigned int l = 0; l < W; ++l)
-            wb[(v * 3 + d) * W + l] = g[d][family_offset[v] + family_offset[l]];
-#endif
     }
 
     /**
@@ -141,7 +133,6 @@ namespace WheelRail
           return __builtin_shufflevector(load<v2d>(p), load<v2d>(p + 3), 0, 1, 2, 3);
       }
     };
-
 
     /** The nodal values of a family's 27 grid nodes @p grid (x-DoF
      *  indices into @p X, node-blocked) per component, @p g[d][n], by
