@@ -42,27 +42,30 @@ namespace WheelRail
     const double *V            = v_in ? v_in->begin() : nullptr;
     double       *F            = f_out.begin();
     const bool    with_damping = (v_in != nullptr) && damping != DampingModel::none;
-    const auto    loop         = [&](auto with_energies) {
-      constexpr bool e = decltype(with_energies)::value;
+    const auto    loop         = [&](auto with_damping_, auto with_energies) {
+      constexpr bool d = decltype(with_damping_)::value, e = decltype(with_energies)::value;
       return prm.solver.single_precision_geometry ?
-                          element_loop<SingleData<>, e>(
-                 batch_single.data(), SingleField::n_double, U, V, F, with_damping, energies) :
-                          element_loop<DoubleData<>, e>(
-                 batch_data.data(), Field::n_fields * W, U, V, F, with_damping, energies);
+                          element_loop<SingleData<>, d, e>(
+                 batch_single.data(), SingleField::n_double, U, V, F, energies) :
+                          element_loop<DoubleData<>, d, e>(
+                 batch_data.data(), Field::n_fields * W, U, V, F, energies);
     };
-    return energies != nullptr ? loop(std::true_type()) : loop(std::false_type());
+    const auto with_energies = [&](auto with_damping_) {
+      return energies != nullptr ? loop(with_damping_, std::true_type()) :
+                                   loop(with_damping_, std::false_type());
+    };
+    return with_damping ? with_energies(std::true_type()) : with_energies(std::false_type());
   }
 
 
 
-  template <typename Data, bool with_energies>
+  template <typename Data, bool with_damping, bool with_energies>
   double
   ElasticOperator::element_loop(const double      *batch_blocks,
                                 const unsigned int block_size,
                                 const double      *U,
                                 const double      *V,
                                 double            *F,
-                                const bool         with_damping,
                                 StrainEnergies    *energies) const
   {
     // Software pipelined by one batch: the nodal values of batch + 1 are
@@ -88,13 +91,13 @@ namespace WheelRail
           if (family_wide_loads[family])
             {
               gather_family_grid(U, grid, ug[slot]);
-              if (with_damping)
+              if constexpr (with_damping)
                 gather_family_grid(V, grid, vg[slot]);
             }
           else
             {
               gather_family_grid_by_node(U, grid, ug[slot]);
-              if (with_damping)
+              if constexpr (with_damping)
                 gather_family_grid_by_node(V, grid, vg[slot]);
             }
         }
@@ -107,7 +110,7 @@ namespace WheelRail
                 const unsigned int idx = nodes[a * W + l];
                 for (unsigned int d = 0; d < 3; ++d)
                   u_gathered[slot][(a * 3 + d) * W + l] = U[idx + d];
-                if (with_damping)
+                if constexpr (with_damping)
                   for (unsigned int d = 0; d < 3; ++d)
                     v_gathered[slot][(a * 3 + d) * W + l] = V[idx + d];
               }
@@ -138,20 +141,17 @@ namespace WheelRail
 #pragma GCC unroll 4
           for (unsigned int lane = 0; lane < W; lane += lanes_of<V>)
             {
-              const auto part = [&](auto damping) __attribute__((always_inline))
-              {
-                return batch_forces<decltype(damping)::value, with_energies>(
-                  Data{data.data, lane},
-                  lame_lambda,
-                  lame_mu,
-                  field_of(0, lane),
-                  field_of(1, lane),
-                  fb + lane,
-                  batch_power,
-                  &batch_energies,
-                  &batch_kappa_ref[std::size_t(batch) * W] + lane);
-              };
-              batch_power = with_damping ? part(std::true_type()) : part(std::false_type());
+              batch_power =
+                batch_forces<with_damping, with_energies>(Data{data.data, lane},
+                                                          lame_lambda,
+                                                          lame_mu,
+                                                          field_of(0, lane),
+                                                          field_of(1, lane),
+                                                          fb + lane,
+                                                          batch_power,
+                                                          &batch_energies,
+                                                          &batch_kappa_ref[std::size_t(batch) * W] +
+                                                            lane);
             }
         };
         const auto batch_fields = [&](const double *u_batch, const double *v_batch) {
@@ -166,7 +166,7 @@ namespace WheelRail
             // each vertex's vector over the children by permutations of
             // the aligned grid vectors
             expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
-            if (with_damping)
+            if constexpr (with_damping)
               expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
             run_parts(batch_fields(ub, vb));
           }

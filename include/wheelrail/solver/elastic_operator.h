@@ -269,16 +269,18 @@ namespace WheelRail
     setup_lumped_mass();
     /** The element force loop over the batches of @p batch_blocks
      *  (@p block_size doubles each), read through @p Data (DoubleData or
-     *  SingleData of element_kernel.h); @p with_energies: the strain
-     *  energies into @p energies as well. */
-    template <typename Data, bool with_energies>
+     *  SingleData of element_kernel.h); @p with_damping: the stiffness
+     *  damping stress from the velocities @p V; @p with_energies: the
+     *  strain energies into @p energies as well. One instantiation per
+     *  combination, so that the hot loop holds one kernel and no branch on
+     *  them. */
+    template <typename Data, bool with_damping, bool with_energies>
     double
     element_loop(const double      *batch_blocks,
                  const unsigned int block_size,
                  const double      *U,
                  const double      *V,
                  double            *F,
-                 const bool         with_damping,
                  StrainEnergies    *energies) const;
     /** Request a batch's element data (@p size doubles) into the cache. */
     static void
