@@ -200,6 +200,8 @@ namespace WheelRail
     std::vector<std::pair<types::material_id, std::string>> bodies;
     if (parameters.problem.geometry == "bar")
       bodies = {{Geometry::MaterialIds::bar, "bar"}};
+    else if (parameters.problem.geometry == "block on plate")
+      bodies = {{Geometry::MaterialIds::block, "block"}, {Geometry::MaterialIds::plate, "plate"}};
     else
       bodies = {{Geometry::MaterialIds::wheel, "wheel"}, {Geometry::MaterialIds::rail, "rail"}};
     const double rho = parameters.material.density;

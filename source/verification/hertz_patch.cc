@@ -49,10 +49,16 @@ namespace WheelRail
           A(k, 2)            = n.y * n.y;
           rhs(k)             = n.pressure * n.pressure;
         }
+      fit.n_fitted = used.size();
+      if (used.size() < 3)
+        return fit;
       const Eigen::Vector3d c = A.colPivHouseholderQr().solve(rhs);
-      fit.p0                  = std::sqrt(c(0));
-      fit.a                   = std::sqrt(-c(0) / c(1));
-      fit.b                   = std::sqrt(-c(0) / c(2));
+      fit.elliptic            = c(0) > 0 && c(1) < 0 && c(2) < 0;
+      if (!fit.elliptic)
+        return fit;
+      fit.p0 = std::sqrt(c(0));
+      fit.a  = std::sqrt(-c(0) / c(1));
+      fit.b  = std::sqrt(-c(0) / c(2));
       return fit;
     }
 
@@ -83,6 +89,15 @@ namespace WheelRail
                      << unit << "   error " << error.str()
                      << (err <= tolerance ? "  ok" : "  OUT OF TOLERANCE") << std::endl;
       };
+      if (!fit.elliptic)
+        {
+          access.pcout << "  no ellipse p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2) fits the "
+                       << fit.n_fitted << " nodes with p >= p_max/4 (Hertz: a " << fmt(h.a * 1e3, 4)
+                       << " mm, b " << fmt(h.b * 1e3, 4) << " mm, p0 " << fmt(h.p0 * 1e-6, 4)
+                       << " MPa)" << std::endl
+                       << "  within tolerance " << fmt(tolerance) << ": no" << std::endl;
+          return false;
+        }
       access.pcout << "  quantity (fit p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2))   FE     Hertz"
                    << std::endl;
       line("semi-axis a (rolling, x)", fit.a, h.a, 1e3, "mm");

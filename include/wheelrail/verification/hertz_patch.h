@@ -30,6 +30,11 @@ namespace WheelRail
       double       p0 = 0, a = 0, b = 0, xc = 0;
       double       force = 0, p_max = 0; ///< sum of the nodal forces [N], largest pressure [Pa]
       unsigned int n_contact = 0;        ///< nodes with p > 0
+      unsigned int n_fitted  = 0;        ///< nodes with p >= 25 % of the largest
+      /** Whether the fit is an ellipse (p0^2 > 0 and p^2 falling off in x
+       *  and in y); a patch of a few nodes, or one in the first steps of
+       *  an impact, need not give one, and then a, b, p0 are 0. */
+      bool elliptic = false;
     };
     EllipseFit
     fit_hertz_ellipse(const std::vector<PatchNode> &nodes);
