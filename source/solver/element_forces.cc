@@ -74,11 +74,9 @@ namespace WheelRail
     // the family permutations' at other offsets) come after the stores
     // have left the store buffer (a load that spans several recent stores
     // cannot be forwarded and waits for them).
-    alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W], fb[8 * 3 * W];
+    alignas(64) double fb[8 * 3 * W];
+    // v is gathered, and read, only with damping
     alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
-    std::fill(std::begin(vb), std::end(vb), 0.);
-    for (auto &slot : v_gathered)
-      std::fill(std::begin(slot), std::end(slot), 0.);
     // a family's grid values per component, padded to 4 aligned vectors
     // (expand_family() reads them whole; the gather repeats node 26)
     alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
@@ -165,6 +163,7 @@ namespace WheelRail
           {
             // each vertex's vector over the children by permutations of
             // the aligned grid vectors
+            alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
             expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
             if constexpr (with_damping)
               expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
