@@ -144,6 +144,30 @@ namespace WheelRail
 
 
 
+    std::vector<Body>
+    bodies(const std::string &geometry_type)
+    {
+      if (geometry_type == "bar")
+        return {{MaterialIds::bar, "bar"}};
+      if (geometry_type == "block on plate")
+        return {{MaterialIds::block, "block"}, {MaterialIds::plate, "plate"}};
+      return {{MaterialIds::wheel, "wheel"}, {MaterialIds::rail, "rail"}};
+    }
+
+
+
+    const char *
+    body_name(const types::material_id material)
+    {
+      for (const char *geometry : {"wheel and rail", "bar", "block on plate"})
+        for (const Body &body : bodies(geometry))
+          if (body.material == material)
+            return body.name;
+      return "unknown body";
+    }
+
+
+
     void
     build(const GeometryParameters                  &p,
           const std::string                         &geometry_type,

@@ -100,13 +100,7 @@ namespace WheelRail
     if (my_rank == teller && worst != numbers::invalid_unsigned_int)
       {
         const Point<dim> &X    = access.solver.support_points()[worst];
-        const auto        m    = access.solver.dof_material(worst);
-        const char       *body = m == Geometry::MaterialIds::wheel ? "wheel" :
-                                 m == Geometry::MaterialIds::rail  ? "rail" :
-                                 m == Geometry::MaterialIds::bar   ? "bar" :
-                                 m == Geometry::MaterialIds::block ? "block" :
-                                 m == Geometry::MaterialIds::plate ? "plate" :
-                                                                     "unknown body";
+        const char       *body = Geometry::body_name(access.solver.dof_material(worst));
         where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
               << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
               << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "

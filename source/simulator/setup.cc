@@ -197,20 +197,13 @@ namespace WheelRail
         }
 
     pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
-    std::vector<std::pair<types::material_id, std::string>> bodies;
-    if (parameters.problem.geometry == "bar")
-      bodies = {{Geometry::MaterialIds::bar, "bar"}};
-    else if (parameters.problem.geometry == "block on plate")
-      bodies = {{Geometry::MaterialIds::block, "block"}, {Geometry::MaterialIds::plate, "plate"}};
-    else
-      bodies = {{Geometry::MaterialIds::wheel, "wheel"}, {Geometry::MaterialIds::rail, "rail"}};
     const double rho = parameters.material.density;
-    for (const auto &body : bodies)
+    for (const Geometry::Body &body : Geometry::bodies(parameters.problem.geometry))
       {
-        const double m      = solver->total_mass(body.first);
-        const double m_mesh = rho * solver->mesh_volume(body.first);
-        const double m_true = rho * Geometry::exact_volume(parameters.geometry, body.first);
-        pcout << "  " << std::left << std::setw(6) << body.second << std::right << " lumped mass "
+        const double m      = solver->total_mass(body.material);
+        const double m_mesh = rho * solver->mesh_volume(body.material);
+        const double m_true = rho * Geometry::exact_volume(parameters.geometry, body.material);
+        pcout << "  " << std::left << std::setw(6) << body.name << std::right << " lumped mass "
               << fmt(m, 8) << " kg, rho x mesh volume " << fmt(m_mesh, 8) << " kg (rel. error "
               << fmt(std::abs(m - m_mesh) / m_mesh, 1) << "), rho x exact volume " << fmt(m_true, 8)
               << " kg (rel. error " << fmt(std::abs(m - m_true) / m_true, 3) << ")" << std::endl;

@@ -10,6 +10,9 @@
 
 #include <wheelrail/parameters/parameters.h>
 
+#include <string>
+#include <vector>
+
 namespace WheelRail
 {
   namespace Geometry
@@ -46,6 +49,23 @@ namespace WheelRail
       constexpr types::material_id block = 4;
       constexpr types::material_id plate = 5;
     } // namespace MaterialIds
+
+    /** A body of a geometry: its material id and its name in the reports. */
+    struct Body
+    {
+      types::material_id material;
+      const char        *name;
+    };
+
+    /** The bodies of @p geometry_type ("wheel and rail", "bar" or "block on
+     *  plate"), in the order the reports list them. */
+    std::vector<Body>
+    bodies(const std::string &geometry_type);
+
+    /** The name of the body with material id @p material, whatever the
+     *  geometry ("unknown body" for an id of none). */
+    const char *
+    body_name(const types::material_id material);
 
     /** Manifold ids. */
     namespace ManifoldIds

@@ -8,6 +8,7 @@
 #define wheelrail_verification_hertz_patch_h
 
 #include <wheelrail/postprocess/postprocessor.h>
+#include <wheelrail/verification/hertz.h>
 
 #include <vector>
 
@@ -15,6 +16,16 @@ namespace WheelRail
 {
   namespace Verification
   {
+    /** Contact modulus E* = E / (2 (1 - nu^2)) of two bodies of @p material [Pa]. */
+    double
+    effective_modulus(const MaterialParameters &material);
+
+    /** Hertz's solution for the wheel on the rail head under the normal
+     *  force @p normal_force [N]: curvatures 1/(2 R_w) along the rail and
+     *  1/(2 R_rail) across it, the parameters' material. */
+    HertzSolution
+    wheel_rail_hertz(const Parameters &parameters, const double normal_force);
+
     /** A node of a contact patch: reference position, pressure [Pa], normal force [N]. */
     struct PatchNode
     {
