@@ -151,17 +151,17 @@ namespace WheelRail
      *  node's x, y, z (and one value beyond, unused) by one 4-wide load,
      *  eight nodes transposed by permutations (lanes 27-31 repeat node 26).
      *  The values are moved, not combined: the same bits as scalar copies.
-     *  Every node needs idx + 4 <= the vector's size. Without 8-lane
-     *  registers, gather_family_grid_by_node(). */
+     *  Every node needs idx + 4 <= the vector's size. For 8-lane registers
+     *  (gather_family_grid()); compiled everywhere, so that
+     *  tests/family_batch_01 compares it with the scalar copies on any host. */
     WHEELRAIL_ALWAYS_INLINE void
-    gather_family_grid(const double *X, const unsigned int *grid, double (&g)[3][32])
+    gather_family_grid_vector(const double *X, const unsigned int *grid, double (&g)[3][32])
     {
-#if WHEELRAIL_EIGHT_LANE_REGISTERS
-#  pragma GCC unroll 4
+#pragma GCC unroll 4
       for (unsigned int q = 0; q < 4; ++q)
         {
           v4d node[8];
-#  pragma GCC unroll 8
+#pragma GCC unroll 8
           for (unsigned int k = 0; k < 8; ++k)
             __builtin_memcpy(&node[k], X + grid[std::min(8 * q + k, 26u)], sizeof(v4d));
           // pairs of nodes, then x and y of four nodes, z of four nodes
@@ -177,6 +177,16 @@ namespace WheelRail
           store(&g[1][8 * q], __builtin_shufflevector(xy0, xy1, 4, 5, 6, 7, 12, 13, 14, 15));
           store(&g[2][8 * q], __builtin_shufflevector(z0, z1, 0, 1, 2, 3, 8, 9, 10, 11));
         }
+    }
+
+    /** The family gather of the target: gather_family_grid_vector() with
+     *  8-lane registers, else gather_family_grid_by_node() (a permutation
+     *  of 8-lane vectors would be taken apart through the stack). */
+    WHEELRAIL_ALWAYS_INLINE void
+    gather_family_grid(const double *X, const unsigned int *grid, double (&g)[3][32])
+    {
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
+      gather_family_grid_vector(X, grid, g);
 #else
       gather_family_grid_by_node(X, grid, g);
 #endif
@@ -247,19 +257,20 @@ namespace WheelRail
     };
     inline constexpr FamilyNodeTerms family_node_terms{};
 
-    /** The family scatter: the batch forces @p fb summed per grid node
-     *  in vector registers (terms in ascending vertex order), then each
-     *  grid node's three sums added to F. */
+    /** The family scatter in vector registers: the batch forces @p fb
+     *  summed per grid node (terms in ascending vertex order), then each
+     *  grid node's three sums added to F. For 8-lane registers
+     *  (scatter_family()); compiled everywhere, like
+     *  gather_family_grid_vector(). */
     template <unsigned int... a>
     WHEELRAIL_ALWAYS_INLINE void
-    scatter_family(double             *F,
-                   const unsigned int *grid,
-                   const double *__restrict fb,
-                   std::integer_sequence<unsigned int, a...>)
+    scatter_family_vector(double             *F,
+                          const unsigned int *grid,
+                          const double *__restrict fb,
+                          std::integer_sequence<unsigned int, a...>)
     {
-#if WHEELRAIL_EIGHT_LANE_REGISTERS
       alignas(64) double grid_sums[3][32];
-#  pragma GCC unroll 3
+#pragma GCC unroll 3
       for (unsigned int d = 0; d < 3; ++d)
         {
           v8d sums[4] = {};
@@ -267,11 +278,11 @@ namespace WheelRail
                                  sums,
                                  std::make_integer_sequence<unsigned int, 4>{}),
            ...);
-#  pragma GCC unroll 4
+#pragma GCC unroll 4
           for (unsigned int r = 0; r < 4; ++r)
             store(&grid_sums[d][8 * r], sums[r]);
         }
-#  pragma GCC unroll 27
+#pragma GCC unroll 27
       for (unsigned int n = 0; n < 27; ++n)
         {
           const unsigned int idx = grid[n];
@@ -279,23 +290,44 @@ namespace WheelRail
           F[idx + 1] += grid_sums[1][n];
           F[idx + 2] += grid_sums[2][n];
         }
-#else
-      // per grid node, its terms in ascending vertex order from zero, as
-      // the vector sums add them
-#  pragma GCC unroll 27
+    }
+
+    /** The family scatter by scalar sums: per grid node, its terms in
+     *  ascending vertex order from zero, as scatter_family_vector() adds
+     *  them (the same bits). */
+    WHEELRAIL_ALWAYS_INLINE void
+    scatter_family_by_node(double *F, const unsigned int *grid, const double *__restrict fb)
+    {
+#pragma GCC unroll 27
       for (unsigned int n = 0; n < 27; ++n)
         {
           const unsigned int idx = grid[n];
-#  pragma GCC unroll 3
+#pragma GCC unroll 3
           for (unsigned int d = 0; d < 3; ++d)
             {
               double s = 0;
-#  pragma GCC unroll 8
+#pragma GCC unroll 8
               for (unsigned int t = 0; t < family_node_terms.count[n]; ++t)
                 s += fb[family_node_terms.offset[n][t] + d * W];
               F[idx + d] += s;
             }
         }
+    }
+
+    /** The family scatter of the target: in vector registers with 8-lane
+     *  registers, else by scalar sums. */
+    template <unsigned int... a>
+    WHEELRAIL_ALWAYS_INLINE void
+    scatter_family(double             *F,
+                   const unsigned int *grid,
+                   const double *__restrict fb,
+                   std::integer_sequence<unsigned int, a...> vertices)
+    {
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
+      scatter_family_vector(F, grid, fb, vertices);
+#else
+      (void)vertices;
+      scatter_family_by_node(F, grid, fb);
 #endif
     }
   } // namespace ElementKernel
