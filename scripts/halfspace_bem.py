@@ -461,10 +461,14 @@ def anderson(history, beta):
     return x + beta * f[-1] - (dx + beta * df) @ gamma
 
 
-def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, start=None):
+def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, start=None,
+                  depth=5):
     """Steady rolling at given creepages; f from the law at the local slip
-    velocity V |W| (a RelaxingState law: its state transported along x)
-    (fixed point with under-relaxation when it depends on it).
+    velocity V |W| (a RelaxingState law: its state transported along x):
+    when it depends on it, a fixed point f = G(f) by steps under-relaxed
+    with relax, Anderson-accelerated over the last depth + 1 iterates; an
+    accelerated f is kept within the range of the f and G(f) it combines,
+    and a residual that grows restarts the acceleration from a plain step.
 
     Without start (q, stick mask, f) the iteration begins in the all-stick
     state with f = f_S everywhere and so follows the branch reached from
@@ -480,7 +484,7 @@ def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, s
     else:
         q, stick, f = (np.array(a) for a in start)
         stick = stick | (contact & (np.linalg.norm(q, axis=0) == 0))
-    history, it = [], 0
+    history, pairs, it = [], [], 0
     for it in range(1, maxit + 1):
         q, W, stick, n_tang = tang(grid, f * p, creep, q, stick)
         s = speed * np.linalg.norm(W, axis=0)
@@ -491,7 +495,14 @@ def solve_rolling(grid, p, creep, law, speed, relax=0.7, ftol=1e-9, maxit=500, s
         if not law.velocity_dependent or res < ftol:
             f = f_new if law.velocity_dependent else f
             break
-        f = f + relax * (f_new - f)
+        if len(history) > 1 and res > history[-2]:
+            pairs = []
+        pairs = (pairs + [(f[contact], f_new[contact])])[-(depth + 1):]
+        mixed = anderson(pairs, relax)
+        lo = min(x.min() for pair in pairs for x in pair)
+        hi = max(x.max() for pair in pairs for x in pair)
+        f = f.copy()
+        f[contact] = np.clip(mixed, lo, hi)
     else:
         raise ConvergenceError("friction law: fixed point not converged in %d iterations "
                                "(max |f_new - f| %.1e)" % (maxit, history[-1]))
