@@ -128,21 +128,14 @@ namespace
     float              *geometry = reinterpret_cast<float *>(block.data());
     for (unsigned int l = 0; l < W; ++l)
       {
-        for (unsigned int k = 0; k < 24; ++k)
+        // b (24 fields), then c (12)
+        for (unsigned int k = 0; k < 36; ++k)
           {
-            const double b = cells[l].b[k / 3][k % 3];
+            const double x = k < 24 ? cells[l].b[k / 3][k % 3] : cells[l].c[(k - 24) / 3][k % 3];
             if (single)
-              geometry[(Field::b + k) * W + l] = b;
+              geometry[(Field::b + k) * W + l] = x;
             else
-              block[(Field::b + k) * W + l] = b;
-          }
-        for (unsigned int k = 0; k < 12; ++k)
-          {
-            const double c = cells[l].c[k / 3][k % 3];
-            if (single)
-              geometry[(Field::c + k) * W + l] = c;
-            else
-              block[(Field::c + k) * W + l] = c;
+              block[(Field::b + k) * W + l] = x;
           }
         block[(single ? SingleField::volume : Field::volume * W) + l] = cells[l].volume;
         block[(single ? SingleField::kappa : Field::kappa * W) + l]   = cells[l].kappa;
