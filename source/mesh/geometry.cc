@@ -144,14 +144,34 @@ namespace WheelRail
 
 
 
+    namespace
+    {
+      /** Each geometry's bodies; the first geometry is the default. */
+      struct GeometryBodies
+      {
+        const char       *geometry;
+        std::vector<Body> bodies;
+      };
+      const std::vector<GeometryBodies> &
+      geometry_bodies()
+      {
+        static const std::vector<GeometryBodies> table = {
+          {"wheel and rail", {{MaterialIds::wheel, "wheel"}, {MaterialIds::rail, "rail"}}},
+          {"bar", {{MaterialIds::bar, "bar"}}},
+          {"block on plate", {{MaterialIds::block, "block"}, {MaterialIds::plate, "plate"}}}};
+        return table;
+      }
+    } // namespace
+
+
+
     std::vector<Body>
     bodies(const std::string &geometry_type)
     {
-      if (geometry_type == "bar")
-        return {{MaterialIds::bar, "bar"}};
-      if (geometry_type == "block on plate")
-        return {{MaterialIds::block, "block"}, {MaterialIds::plate, "plate"}};
-      return {{MaterialIds::wheel, "wheel"}, {MaterialIds::rail, "rail"}};
+      for (const GeometryBodies &g : geometry_bodies())
+        if (geometry_type == g.geometry)
+          return g.bodies;
+      return geometry_bodies().front().bodies;
     }
 
 
@@ -159,8 +179,8 @@ namespace WheelRail
     const char *
     body_name(const types::material_id material)
     {
-      for (const char *geometry : {"wheel and rail", "bar", "block on plate"})
-        for (const Body &body : bodies(geometry))
+      for (const GeometryBodies &g : geometry_bodies())
+        for (const Body &body : g.bodies)
           if (body.material == material)
             return body.name;
       return "unknown body";
