@@ -183,12 +183,12 @@ namespace WheelRail
           << "  smallest scaled Jacobian     : " << fmt(q.min_scaled_jacobian, 4) << std::endl
           << "  largest aspect ratio         : " << fmt(q.max_aspect_ratio, 4) << std::endl;
     if (parameters.problem.geometry == "wheel and rail")
-      for (const auto &[id, name] : {std::pair{Geometry::MaterialIds::wheel, "wheel"},
-                                     std::pair{Geometry::MaterialIds::rail, "rail "}})
+      for (const Geometry::Body &body : Geometry::bodies(parameters.problem.geometry))
         {
           const Geometry::ZoneCells z =
-            Geometry::zone_cells(parameters.geometry, id, triangulation);
-          pcout << "  solution zone, " << name << "        : ";
+            Geometry::zone_cells(parameters.geometry, body.material, triangulation);
+          pcout << "  solution zone, " << std::left << std::setw(5) << body.name << std::right
+                << "        : ";
           if (z.n_cells == 0)
             pcout << "none" << std::endl;
           else
