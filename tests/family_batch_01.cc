@@ -9,13 +9,18 @@
 //  - batch_forces() on a batch of random element data (double and single
 //    precision geometry, with and without damping, with energies) against a
 //    plain scalar evaluation of the same one-point St. Venant-Kirchhoff
-//    stress, stiffness damping and hourglass forces, cell by cell: forces,
+//    stress (the law of st_venant_kirchhoff.h on deal.II tensors),
+//    stiffness damping and hourglass forces, cell by cell: forces,
 //    damping power and strain energies within 1e-12 of their scale (the
 //    vector widths contract products into FMAs differently); the same
 //    with the family's values read through expand_family() or
 //    FamilyGridField.
 // Host-independent output: counts of differing values and verdicts.
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
 #include <wheelrail/solver/family_batch.h>
+#include <wheelrail/solver/st_venant_kirchhoff.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,6 +29,7 @@
 #include <random>
 #include <vector>
 
+using namespace WheelRail;
 using namespace WheelRail::ElementKernel;
 
 namespace
@@ -39,13 +45,15 @@ namespace
     double f[8][3] = {}, power = 0, internal = 0, hourglass = 0, hourglass_reference = 0;
   };
 
-  /** The kernel's quantities for one cell in plain scalar arithmetic;
-   *  with @p translation_free the gradients sum u_a - u_0 (single
-   *  precision geometry, whose b_a need not sum to zero). */
+  /** The kernel's quantities for one cell in plain scalar arithmetic, the
+   *  law by the project's St. Venant-Kirchhoff on deal.II tensors (E from
+   *  F^T F, rounded unlike the kernel's (H + H^T + H^T H) / 2); with
+   *  @p translation_free the gradients sum u_a - u_0 (single precision
+   *  geometry, whose b_a need not sum to zero). */
   void
   reference(Cell &cell, const bool damping, const bool translation_free)
   {
-    double H[3][3] = {}, L[3][3] = {};
+    Tensor<2, dim> H, L;
     for (unsigned int a = 0; a < 8; ++a)
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
@@ -55,40 +63,17 @@ namespace
             H[i][j] += du * cell.b[a][j];
             L[i][j] += dv * cell.b[a][j];
           }
-    double E[3][3], Ed[3][3], Et[3][3];
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        {
-          double hth = 0, htl = 0;
-          for (unsigned int k = 0; k < 3; ++k)
-            {
-              hth += H[k][i] * H[k][j];
-              htl += H[k][i] * L[k][j] + L[k][i] * H[k][j];
-            }
-          E[i][j]  = 0.5 * (H[i][j] + H[j][i] + hth);
-          Ed[i][j] = damping ? 0.5 * (L[i][j] + L[j][i] + htl) : 0.;
-          Et[i][j] = E[i][j] + cell.beta * Ed[i][j];
-        }
-    const auto trace  = [](const double(&A)[3][3]) { return A[0][0] + A[1][1] + A[2][2]; };
-    const auto square = [](const double(&A)[3][3]) {
-      double s = 0;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          s += A[i][j] * A[i][j];
-      return s;
+    const auto stress = [](const Tensor<2, dim> &A) {
+      return StVenantKirchhoff::second_piola_kirchhoff_stress(A, lambda, mu);
     };
-    double S[3][3], P[3][3];
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        S[i][j] = (i == j ? lambda * trace(Et) : 0.) + 2 * mu * Et[i][j];
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = 0; j < 3; ++j)
-        {
-          P[i][j] = S[i][j];
-          for (unsigned int k = 0; k < 3; ++k)
-            P[i][j] += H[i][k] * S[k][j];
-        }
-    double modes = 0;
+    const Tensor<2, dim> F = unit_symmetric_tensor<dim>() + H;
+    const Tensor<2, dim> E = StVenantKirchhoff::green_lagrange_strain(F);
+    // the rate of E, dE/dt = sym(F^T L), and the first Piola-Kirchhoff
+    // stress of the elastic and the damping stress together
+    const Tensor<2, dim> Ed =
+      damping ? 0.5 * (transpose(F) * L + transpose(L) * F) : Tensor<2, dim>();
+    const Tensor<2, dim> P     = F * stress(E + cell.beta * Ed);
+    double               modes = 0;
     for (unsigned int i = 0; i < 3; ++i)
       for (unsigned int al = 0; al < 4; ++al)
         {
@@ -110,10 +95,8 @@ namespace
       for (unsigned int i = 0; i < 3; ++i)
         for (unsigned int j = 0; j < 3; ++j)
           cell.f[a][i] += cell.volume * P[i][j] * cell.b[a][j];
-    cell.power =
-      damping ? cell.beta * cell.volume * (lambda * trace(Ed) * trace(Ed) + 2 * mu * square(Ed)) :
-                0.;
-    cell.internal            = cell.volume * (0.5 * lambda * trace(E) * trace(E) + mu * square(E));
+    cell.power               = cell.beta * cell.volume * scalar_product(Ed, stress(Ed));
+    cell.internal            = 0.5 * cell.volume * scalar_product(E, stress(E));
     cell.hourglass           = 0.5 * cell.kappa * modes;
     cell.hourglass_reference = 0.5 * cell.kappa_ref * modes;
   }
