@@ -77,6 +77,8 @@ namespace WheelRail
     alignas(64) double fb[8 * 3 * W];
     // v is gathered, and read, only with damping
     alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
+    // a family's vertex vectors (8-lane registers: expand_family())
+    alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
     // a family's grid values per component, padded to 4 aligned vectors
     // (expand_family() reads them whole; the gather repeats node 26)
     alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
@@ -131,49 +133,61 @@ namespace WheelRail
           prefetch_nodes(batch + node_prefetch_distance, U, V, F, with_damping);
         if (batch + 1 < n_batches)
           gather(batch + 1, slot ^ 1);
-        const bool in_family = family != numbers::invalid_unsigned_int;
-        // the kernel once per part of the batch that its vector holds
+        const bool                    in_family = family != numbers::invalid_unsigned_int;
         typedef typename Data::vector V;
+        const double                 *kappa_ref   = &batch_kappa_ref[std::size_t(batch) * W];
         double                        batch_power = 0;
-        const auto                    run_parts   = [&](const auto &field_of) {
-#pragma GCC unroll 4
-          for (unsigned int lane = 0; lane < W; lane += lanes_of<V>)
-            {
-              batch_power =
-                batch_forces<with_damping, with_energies>(Data{data.data, lane},
-                                                          lame_lambda,
-                                                          lame_mu,
-                                                          field_of(0, lane),
-                                                          field_of(1, lane),
-                                                          fb + lane,
-                                                          batch_power,
-                                                          &batch_energies,
-                                                          &batch_kappa_ref[std::size_t(batch) * W] +
-                                                            lane);
-            }
-        };
-        const auto batch_fields = [&](const double *u_batch, const double *v_batch) {
-          return [=](const unsigned int field, const unsigned int lane) {
-            return BatchField<V>{(field == 0 ? u_batch : v_batch) + lane};
-          };
-        };
-        if (!in_family)
-          run_parts(batch_fields(u_gathered[slot], v_gathered[slot]));
-        else if constexpr (WHEELRAIL_EIGHT_LANE_REGISTERS)
+        if constexpr (lanes_of<V> == W)
           {
-            // each vertex's vector over the children by permutations of
-            // the aligned grid vectors
-            alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
-            expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
-            if constexpr (with_damping)
-              expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
-            run_parts(batch_fields(ub, vb));
+            // one kernel, inlined here, for both kinds of batch (a kernel
+            // called as a function, or inlined at two places, took 8-10 %
+            // longer): a family's vertex vectors over the children by
+            // permutations of the aligned grid vectors
+            const double *u_batch = u_gathered[slot], *v_batch = v_gathered[slot];
+            if (in_family)
+              {
+                expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
+                if constexpr (with_damping)
+                  expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
+                u_batch = ub;
+                v_batch = vb;
+              }
+            batch_power = batch_forces<with_damping, with_energies>(data,
+                                                                    lame_lambda,
+                                                                    lame_mu,
+                                                                    BatchField<V>{u_batch},
+                                                                    BatchField<V>{v_batch},
+                                                                    fb,
+                                                                    0.,
+                                                                    &batch_energies,
+                                                                    kappa_ref);
           }
         else
-          // narrower vectors read the grid values in place
-          run_parts([&](const unsigned int field, const unsigned int lane) {
-            return FamilyGridField<V>{field == 0 ? ug[slot] : vg[slot], lane};
-          });
+          {
+            // the kernel once per part of the batch that its vector holds
+            const auto run_parts = [&](const auto &field_of) {
+#pragma GCC unroll 4
+              for (unsigned int lane = 0; lane < W; lane += lanes_of<V>)
+                batch_power = batch_forces<with_damping, with_energies>(Data{data.data, lane},
+                                                                        lame_lambda,
+                                                                        lame_mu,
+                                                                        field_of(0, lane),
+                                                                        field_of(1, lane),
+                                                                        fb + lane,
+                                                                        batch_power,
+                                                                        &batch_energies,
+                                                                        kappa_ref + lane);
+            };
+            if (!in_family)
+              run_parts([&](const unsigned int field, const unsigned int lane) {
+                return BatchField<V>{(field == 0 ? u_gathered[slot] : v_gathered[slot]) + lane};
+              });
+            else
+              // narrower vectors read the grid values in place
+              run_parts([&](const unsigned int field, const unsigned int lane) {
+                return FamilyGridField<V>{field == 0 ? ug[slot] : vg[slot], lane};
+              });
+          }
         power += batch_power;
         if (in_family)
           {
