@@ -98,7 +98,8 @@ run_bench() {
   fi
   local commit cpu
   commit=$(git rev-parse --short HEAD 2>/dev/null || echo unknown)
-  git diff --quiet 2>/dev/null || commit="$commit+changes"
+  # the log itself does not count as a change to the code
+  git diff --quiet -- . ':(exclude)bench/results.csv' 2>/dev/null || commit="$commit+changes"
   cpu=$(sed -n 's/^model name[[:space:]]*:[[:space:]]*//p' /proc/cpuinfo | head -1 | tr -d ',')
   # what the step is measured against: this machine's FMA peak and its
   # bandwidth on 2 cores, which turns ns per element-step into the bytes per
