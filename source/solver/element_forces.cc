@@ -77,8 +77,6 @@ namespace WheelRail
     alignas(64) double fb[8 * 3 * W];
     // v is gathered, and read, only with damping
     alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
-    // a family's vertex vectors (8-lane registers: expand_family())
-    alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
     // a family's grid values per component, padded to 4 aligned vectors
     // (expand_family() reads them whole; the gather repeats node 26)
     alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
@@ -143,7 +141,8 @@ namespace WheelRail
             // called as a function, or inlined at two places, took 8-10 %
             // longer): a family's vertex vectors over the children by
             // permutations of the aligned grid vectors
-            const double *u_batch = u_gathered[slot], *v_batch = v_gathered[slot];
+            alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
+            const double      *u_batch = u_gathered[slot], *v_batch = v_gathered[slot];
             if (in_family)
               {
                 expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
