@@ -20,13 +20,11 @@ namespace WheelRail
 
 
 
-  const PenaltyContact::FaceBound &
-  PenaltyContact::face_bound(Pass &pass, const unsigned int f)
+  void
+  PenaltyContact::compute_face_bound(Pass &pass, const unsigned int f)
   {
-    FaceBound &bound = pass.bounds[f];
-    if (bound.evaluation == evaluation)
-      return bound;
-    bound.evaluation = evaluation;
+    FaceBound &bound         = pass.bounds[f];
+    pass.bound_evaluation[f] = evaluation;
     // compute_slaves() uses a face's projection only if it lies within
     // |xi|, |eta| <= 1.1. A converged projection x_k of x_s is a point of
     // the face extended to 1.1, so |x_k - c| <= R (the extended face lies
@@ -43,46 +41,44 @@ namespace WheelRail
     // + eta (w x g2).
     constexpr double  e      = 1.1; // the extension
     const MasterFace &face   = pass.faces[f];
-    bound.frame              = FaceFrame(node_x[face.node[0]],
-                            node_x[face.node[1]],
-                            node_x[face.node[2]],
-                            node_x[face.node[3]]);
-    const Tensor<1, dim> &g1 = bound.frame.g1, &g2 = bound.frame.g2, &w = bound.frame.w;
+    FaceFrame        &frame  = pass.frames[f];
+    frame                    = FaceFrame(node_x[face.node[0]],
+                      node_x[face.node[1]],
+                      node_x[face.node[2]],
+                      node_x[face.node[3]]);
+    bound.centre             = frame.centre;
+    bound.sin_angle          = std::numeric_limits<double>::infinity();
+    const Tensor<1, dim> &g1 = frame.g1, &g2 = frame.g2, &w = frame.w;
     const Tensor<1, dim>  n0     = cross_product_3d(g1, g2);
     const double          length = n0.norm();
-    bound.usable                 = length > 0;
-    if (!bound.usable)
-      return bound;
+    if (!(length > 0))
+      return;
     bound.normal = n0 / length;
     // the normal's change across the face, and its part across n0
     const Tensor<1, dim> a = cross_product_3d(g1, w), b = cross_product_3d(w, g2);
     const Tensor<1, dim> at = cross_product_3d(a, bound.normal),
                          bt = cross_product_3d(b, bound.normal);
     const double an = a * bound.normal, bn = b * bound.normal;
-    bound.radius    = 0;
-    bound.sin_angle = 0;
+    bound.radius     = 0;
+    double sin_angle = 0;
     for (unsigned int v = 0; v < 4; ++v)
       {
         const double xi = (v & 1) ? e : -e, eta = (v & 2) ? e : -e;
         bound.radius       = std::max(bound.radius, (xi * g1 + eta * g2 + xi * eta * w).norm());
         const double along = length + xi * an + eta * bn; // m . n0 / |n0|
         if (!(along > 0))
-          {
-            bound.usable = false;
-            return bound;
-          }
+          return;
         const double across = (xi * at + eta * bt).norm(); // |m x n0| / |n0|
-        bound.sin_angle =
-          std::max(bound.sin_angle, across / std::sqrt(along * along + across * across));
+        sin_angle = std::max(sin_angle, across / std::sqrt(along * along + across * across));
       }
-    bound.usable = bound.sin_angle <= 0.1;
-    return bound;
+    if (sin_angle <= 0.1)
+      bound.sin_angle = sin_angle;
   }
 
 
 
-  const Tensor<1, dim> &
-  PenaltyContact::averaged_normal(const unsigned int n)
+  void
+  PenaltyContact::compute_averaged_normal(const unsigned int n)
   {
     // Averaged nodal normals of the candidate master faces: the normal is
     // interpolated from them over a face, so that it, and the contact force,
@@ -91,10 +87,8 @@ namespace WheelRail
     // over the faces in ascending order, as one loop over all candidate
     // faces would: the same bits on every rank, whichever node it needs.
     Tensor<1, dim> &normal = node_normal[n];
-    if (normal_evaluation[n] == evaluation)
-      return normal;
-    normal_evaluation[n] = evaluation;
-    normal               = Tensor<1, dim>();
+    normal_evaluation[n]   = evaluation;
+    normal                 = Tensor<1, dim>();
     for (unsigned int e = normal_offsets[n]; e < normal_offsets[n + 1]; ++e)
       {
         const NormalEntry &entry = normal_entries[e];
@@ -109,7 +103,6 @@ namespace WheelRail
       }
     if (normal.norm() > 0)
       normal /= normal.norm();
-    return normal;
   }
 
 

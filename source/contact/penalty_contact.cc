@@ -231,7 +231,11 @@ namespace WheelRail
         }
     node_area.resize(node_dof.size(), 0.);
     for (Pass &pass : passes)
-      pass.bounds.assign(pass.faces.size(), FaceBound());
+      {
+        pass.bounds.assign(pass.faces.size(), FaceBound());
+        pass.frames.assign(pass.faces.size(), ContactGeometry::FaceFrame());
+        pass.bound_evaluation.assign(pass.faces.size(), 0);
+      }
     node_normal.assign(node_dof.size(), Tensor<1, dim>());
     normal_evaluation.assign(node_dof.size(), 0);
     normal_offsets.assign(node_dof.size() + 1, 0);

@@ -126,14 +126,15 @@ namespace WheelRail
         double ignored_slack = std::numeric_limits<double>::infinity();
         for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
           {
-            const FaceBound &bound = face_bound(pass, pass.face_lists[k]);
-            if (bound.usable)
+            const unsigned int f     = pass.face_lists[k];
+            const FaceBound   &bound = face_bound(pass, f);
+            if (bound.usable())
               {
                 // the projection cannot lie within 1.1 of this face (see
                 // face_bound()): project() would give out > 0.1,
                 // skipped below; most candidates are neighbours of the
                 // face under the slave and end here
-                const Tensor<1, dim> d  = xs - bound.frame.centre;
+                const Tensor<1, dim> d  = xs - bound.centre;
                 const double         dd = d.norm_square();
                 const double         dn = d * bound.normal;
                 const double         reach =
@@ -141,7 +142,7 @@ namespace WheelRail
                 if (dd - dn * dn > reach * reach)
                   continue;
               }
-            const MasterFace &face = pass.faces[pass.face_lists[k]];
+            const MasterFace &face = pass.faces[f];
             BilinearFace      bf{{&node_x[face.node[0]],
                                   &node_x[face.node[1]],
                                   &node_x[face.node[2]],
@@ -149,10 +150,10 @@ namespace WheelRail
             // a projection beyond 1.1 is not used: on a nearly flat face
             // Newton may stop as soon as it is clearly there
             double xi, eta;
-            bound.frame.project(xs,
-                                xi,
-                                eta,
-                                bound.usable ? 0.1 : std::numeric_limits<double>::infinity());
+            pass.frames[f].project(xs,
+                                   xi,
+                                   eta,
+                                   bound.usable() ? 0.1 : std::numeric_limits<double>::infinity());
             const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
             if (out > 0.1)
               continue;
@@ -177,7 +178,7 @@ namespace WheelRail
                                 (o <= best_out + 1e-12 && std::abs(gap) < std::abs(best_gap));
             if (best_face < 0 || better)
               {
-                best_face = pass.face_lists[k];
+                best_face = f;
                 best_xi   = xi;
                 best_eta  = eta;
                 best_gap  = gap;

@@ -37,6 +37,7 @@
 #include <wheelrail/parameters/parameters.h>
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -244,14 +245,20 @@ namespace WheelRail
      * lies in the ball (centre, radius), and its normals within the angle
      * asin(sin_angle) of @p normal.
      */
-    struct FaceBound
+    struct alignas(64) FaceBound
     {
-      ContactGeometry::FaceFrame frame;  ///< the face in closed form
-      Tensor<1, dim>             normal; ///< unit normal at xi = eta = 0
-      double                     radius     = 0;
-      double                     sin_angle  = 0;
-      bool                       usable     = false; ///< nearly flat and not degenerate
-      unsigned long              evaluation = 0;     ///< add_forces() call it was computed in
+      Point<dim>     centre; ///< the face's point at xi = eta = 0
+      Tensor<1, dim> normal; ///< unit normal at xi = eta = 0
+      double         radius = 0;
+      /** Infinite where the face is degenerate or its normal turns by more
+       *  than the bound covers. */
+      double sin_angle = std::numeric_limits<double>::infinity();
+      /** Nearly flat and not degenerate: the bound holds. */
+      bool
+      usable() const
+      {
+        return sin_angle <= 0.1;
+      }
     };
     struct Pass
     {
@@ -264,7 +271,13 @@ namespace WheelRail
       std::vector<unsigned int>                candidate_faces;
       std::vector<unsigned int>                face_offsets; ///< CSR: slave -> faces
       std::vector<unsigned int>                face_lists;
-      std::vector<FaceBound>                   bounds; ///< per face, computed when first needed
+      /** Per face, computed at its first use in an evaluation: the bound
+       *  (one cache line, read for every candidate face of a slave), the
+       *  face in closed form (read for the faces the bound keeps), and the
+       *  evaluation they were computed in. */
+      std::vector<FaceBound>                  bounds;
+      std::vector<ContactGeometry::FaceFrame> frames;
+      std::vector<unsigned long>              bound_evaluation;
       /** Per slave: the value of approach_motion up to which it stays
        *  separated (select_slaves()); -infinity: compute it at the next
        *  evaluation. The same on every rank. */
@@ -327,9 +340,17 @@ namespace WheelRail
     void
     check_initial_overlap() const;
     /** The FaceBound of face @p f of @p pass at the current positions,
-     *  computed at its first use in this evaluation. */
+     *  computed at its first use in this evaluation (with the face's
+     *  FaceFrame, pass.frames[f]). */
     const FaceBound &
-    face_bound(Pass &pass, const unsigned int f);
+    face_bound(Pass &pass, const unsigned int f)
+    {
+      if (pass.bound_evaluation[f] != evaluation)
+        compute_face_bound(pass, f);
+      return pass.bounds[f];
+    }
+    void
+    compute_face_bound(Pass &pass, const unsigned int f);
     /** The axis-aligned box (lowest, highest corner) of master face @p face
      *  with its nodes at @p x. */
     static std::pair<Point<dim>, Point<dim>>
@@ -338,7 +359,14 @@ namespace WheelRail
      *  @p n at the current positions, computed at its first use in this
      *  evaluation. */
     const Tensor<1, dim> &
-    averaged_normal(const unsigned int n);
+    averaged_normal(const unsigned int n)
+    {
+      if (normal_evaluation[n] != evaluation)
+        compute_averaged_normal(n);
+      return node_normal[n];
+    }
+    void
+    compute_averaged_normal(const unsigned int n);
     /** The candidate faces at each contact node (after a search or load). */
     void
     build_normal_adjacency();
