@@ -131,7 +131,7 @@ namespace WheelRail
             if (bound.usable())
               {
                 // the projection cannot lie within 1.1 of this face (see
-                // face_bound()): project() would give out > 0.1,
+                // compute_face_bound()): project() would give out > 0.1,
                 // skipped below; most candidates are neighbours of the
                 // face under the slave and end here
                 const Tensor<1, dim> d  = xs - bound.centre;

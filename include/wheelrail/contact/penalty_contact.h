@@ -241,7 +241,7 @@ namespace WheelRail
     };
     /**
      * What a slave's projection onto a master face can be, bounded cheaply
-     * (see face_bound()): the face extended to |xi|, |eta| <= 1.1
+     * (see compute_face_bound()): the face extended to |xi|, |eta| <= 1.1
      * lies in the ball (centre, radius), and its normals within the angle
      * asin(sin_angle) of @p normal.
      */
