@@ -154,7 +154,7 @@ namespace WheelRail
        * wanted_out the iteration stops early once the iterate lies beyond
        * it by more than twice its last step (from the second step on).
        * Gauss-Newton contracts the error by |r| |w| / |g|^2 per step, small
-       * on the nearly flat faces this is used for (FaceBound::usable), so
+       * on the nearly flat faces this is used for (FaceBound::usable()), so
        * the converged point lies beyond as well and the caller's decision
        * is the same.
        */
