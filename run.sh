@@ -109,6 +109,8 @@ run_bench() {
   limits=$("$top/build/machine_limits" 2)
   echo "$limits"
   triad=$(echo "$limits" | sed -n 's/.*STREAM triad.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
+  # the element loop's floor on this host: its family batch on cached data
+  "$top/build/element_kernel"
   local case dir rows=0
   for case in paper paper_single block; do
     dir=results/bench

@@ -13,6 +13,10 @@
 #include <cstddef>
 #include <utility>
 
+#ifdef __AVX512F__
+#  include <immintrin.h>
+#endif
+
 #define WHEELRAIL_ALWAYS_INLINE inline __attribute__((always_inline))
 
 /** Whether the target's vector registers hold 8 doubles (AVX-512). */
@@ -120,11 +124,22 @@ namespace WheelRail
       typedef float type __attribute__((vector_size(8)));
     };
 
-    /** Floats widened to doubles, as many as @p V has lanes. */
+    /** Floats widened to doubles, as many as @p V has lanes (exact). With
+     *  AVX-512, 8 lanes by one conversion from memory: GCC 12 lowers
+     *  __builtin_convertvector from 8 floats to 8 doubles as two
+     *  half-width conversions, an extract and an insert, which took a fifth
+     *  of the single-geometry kernel's time (doc/performance_avx512.md).
+     *  (The masked form of the intrinsic, all lanes set, is the same
+     *  instruction; the plain one's undefined source trips
+     *  -Wmaybe-uninitialized in GCC 12.) */
     template <typename V>
     WHEELRAIL_ALWAYS_INLINE V
     load_widened(const float *p)
     {
+#ifdef __AVX512F__
+      if constexpr (lanes_of<V> == 8)
+        return (V)_mm512_maskz_cvtps_pd(0xFF, _mm256_loadu_ps(p));
+#endif
       typename FloatLanes<V>::type x;
       __builtin_memcpy(&x, p, sizeof(x));
       return __builtin_convertvector(x, V);

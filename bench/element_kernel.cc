@@ -1,0 +1,232 @@
+// The element loop's cost where memory plays no part: the family path of the
+// explicit force loop (source/solver/element_forces.cc) run, phase by phase,
+// over a row of family batches whose nodal values and element data stay in
+// the caches (about 330 kB for 64 families). It uses the loop's own header
+// functions and compiler flags, so that its figures bound the loop's from
+// below on this host: the paper case's element loop takes 1.5-1.8 times the
+// whole family batch here (the rest is waiting for memory), the undamped
+// block benchmark about as long as its phases here.
+//
+// Phases, each the best of 7 repetitions, in ns per cell (8 cells per
+// batch): the gathers of u and v of a family's 27 grid nodes, their
+// expansion to the kernel's vertex vectors, the force kernel (damped and
+// undamped, double and single-precision geometry), the scatter of the
+// forces, and the whole family batch as the paper case runs it (damped,
+// single geometry). No deal.II, so that it builds in seconds.
+//
+// usage: element_kernel [families] [repetitions]   (default 64, 4000)
+
+#include <wheelrail/solver/family_batch.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <vector>
+
+using namespace WheelRail::ElementKernel;
+
+namespace
+{
+  typedef kernel_vector Vec;
+
+  // a row of families along x, neighbours sharing their faces' 9 nodes;
+  // node-blocked x, y, z as in the solver's vectors
+  struct Row
+  {
+    unsigned int              n_families;
+    std::vector<unsigned int> grid;
+    std::vector<double>       U, V, F;
+    std::vector<double>       double_data, single_data;
+
+    explicit Row(const unsigned int n)
+      : n_families(n)
+      , grid(27 * n)
+    {
+      const unsigned int n_nodes = (2 * n + 1) * 9;
+      // 4 values beyond the last node: the 4-wide loads of the gather
+      U.resize(3 * n_nodes + 4);
+      V.resize(U.size());
+      F.resize(U.size());
+      for (unsigned int f = 0; f < n; ++f)
+        for (unsigned int k = 0; k < 3; ++k)
+          for (unsigned int j = 0; j < 3; ++j)
+            for (unsigned int i = 0; i < 3; ++i)
+              grid[27 * f + 9 * k + 3 * j + i] = 3 * ((2 * f + i) * 9 + 3 * k + j);
+      // the scales of a 1 mm steel cell: u ~ 1 um, v ~ 1 cm/s, b ~ 1/h
+      // (summing to zero over the vertices), c ~ h/10, V0 = h^3
+      std::mt19937                           random(1);
+      std::uniform_real_distribution<double> unit(-1., 1.);
+      for (std::size_t i = 0; i < U.size(); ++i)
+        {
+          U[i] = 1e-6 * unit(random);
+          V[i] = 1e-2 * unit(random);
+        }
+      double_data.assign(std::size_t(n) * Field::n_fields * W, 0.);
+      single_data.assign(std::size_t(n) * SingleField::n_double, 0.);
+      for (unsigned int f = 0; f < n; ++f)
+        {
+          double *d = &double_data[std::size_t(f) * Field::n_fields * W];
+          float  *s =
+            reinterpret_cast<float *>(&single_data[std::size_t(f) * SingleField::n_double]);
+          for (unsigned int l = 0; l < W; ++l)
+            {
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  double sum = 0;
+                  for (unsigned int a = 0; a < 8; ++a)
+                    {
+                      const double b = a < 7 ? 250. * unit(random) : -sum;
+                      sum += b;
+                      d[(Field::b + a * 3 + j) * W + l] = b;
+                    }
+                }
+              for (unsigned int k = 0; k < 12; ++k)
+                d[(Field::c + k) * W + l] = 1e-4 * unit(random);
+              d[Field::volume * W + l] = 1e-9;
+              d[Field::kappa * W + l]  = 1e6;
+              d[Field::beta * W + l]   = 1e-8;
+              for (unsigned int k = 0; k < SingleField::n_geometry; ++k)
+                s[k * W + l] = static_cast<float>(d[k * W + l]);
+            }
+          double *sd = &single_data[std::size_t(f) * SingleField::n_double];
+          for (unsigned int l = 0; l < W; ++l)
+            {
+              sd[SingleField::volume + l] = d[Field::volume * W + l];
+              sd[SingleField::kappa + l]  = d[Field::kappa * W + l];
+              sd[SingleField::beta + l]   = d[Field::beta * W + l];
+            }
+        }
+    }
+  };
+
+  // the kernel on a family's grid values as the force loop runs it: on the
+  // expanded vertex vectors with 8-lane registers, else part by part on
+  // the grid values in place
+  template <typename Data, bool damping>
+  double
+  kernel(const double *data,
+         const double (&ug)[3][32],
+         const double (&vg)[3][32],
+         const double *ub,
+         const double *vb,
+         double       *fb)
+  {
+    double power = 0;
+    if constexpr (lanes_of<Vec> == W)
+      power = batch_forces<damping>(
+        Data{data}, 1.2e11, 8e10, BatchField<Vec>{ub}, BatchField<Vec>{vb}, fb);
+    else
+      for (unsigned int lane = 0; lane < W; lane += lanes_of<Vec>)
+        power = batch_forces<damping>(Data{data, lane},
+                                      1.2e11,
+                                      8e10,
+                                      FamilyGridField<Vec>{ug, lane},
+                                      FamilyGridField<Vec>{vg, lane},
+                                      fb + lane,
+                                      power);
+    return power;
+  }
+
+  template <typename Phase>
+  double
+  best_ns_per_cell(const Row &row, const unsigned int repetitions, const Phase &phase)
+  {
+    double best = 1e300;
+    for (unsigned int k = 0; k < 7; ++k)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        for (unsigned int r = 0; r < repetitions; ++r)
+          for (unsigned int f = 0; f < row.n_families; ++f)
+            phase(f);
+        const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        best = std::min(best, s / (double(repetitions) * row.n_families * W) * 1e9);
+      }
+    return best;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  const unsigned int n_families  = argc > 1 ? std::atoi(argv[1]) : 64;
+  const unsigned int repetitions = argc > 2 ? std::atoi(argv[2]) : 4000;
+  if (n_families < 1 || repetitions < 1)
+    {
+      std::fprintf(stderr, "usage: element_kernel [families >= 1] [repetitions >= 1]\n");
+      return 2;
+    }
+  Row                row(n_families);
+  alignas(64) double ug[3][32] = {}, vg[3][32] = {};
+  alignas(64) double ub[8 * 3 * W] = {}, vb[8 * 3 * W] = {}, fb[8 * 3 * W] = {};
+  double             sink = 0;
+  const auto         grid = [&](const unsigned int f) { return &row.grid[27 * f]; };
+  const auto         dd   = [&](const unsigned int f) {
+    return &row.double_data[std::size_t(f) * Field::n_fields * W];
+  };
+  const auto sd = [&](const unsigned int f) {
+    return &row.single_data[std::size_t(f) * SingleField::n_double];
+  };
+  // a phase timed alone reads what the one before wrote; the empty asm
+  // keeps the compiler from dropping its stores
+  const auto gather = [&](const unsigned int f) {
+    gather_family_grid(row.U.data(), grid(f), ug);
+    gather_family_grid(row.V.data(), grid(f), vg);
+    asm volatile("" ::: "memory");
+  };
+  const auto expand = [&](const unsigned int) {
+    if constexpr (lanes_of<Vec> == W)
+      {
+        expand_family(ug, ub, std::make_integer_sequence<unsigned int, 8>{});
+        expand_family(vg, vb, std::make_integer_sequence<unsigned int, 8>{});
+      }
+    asm volatile("" ::: "memory");
+  };
+  const auto scatter = [&](const unsigned int f) {
+    scatter_family(row.F.data(), grid(f), fb, std::make_integer_sequence<unsigned int, 8>{});
+    asm volatile("" ::: "memory");
+  };
+  for (unsigned int f = 0; f < n_families; ++f)
+    gather(f), expand(f);
+
+  std::printf("The family batch on cached data (%u families, %u lanes per vector), "
+              "ns per cell:\n",
+              n_families,
+              lanes_of<Vec>);
+  const auto print = [&](const char *name, const auto &phase) {
+    std::printf("  %-44s %6.2f\n", name, best_ns_per_cell(row, repetitions, phase));
+  };
+  print("gather of u and v (27 grid nodes each)", gather);
+  print("expansion to vertex vectors", expand);
+  // (the forces of a kernel timed alone count as used)
+  print("kernel, damped, double geometry", [&](const unsigned int f) {
+    sink += kernel<DoubleData<>, true>(dd(f), ug, vg, ub, vb, fb);
+    asm volatile("" ::: "memory");
+  });
+  print("kernel, damped, single geometry", [&](const unsigned int f) {
+    sink += kernel<SingleData<>, true>(sd(f), ug, vg, ub, vb, fb);
+    asm volatile("" ::: "memory");
+  });
+  print("kernel, undamped, single geometry", [&](const unsigned int f) {
+    sink += kernel<SingleData<>, false>(sd(f), ug, vg, ub, vb, fb);
+    asm volatile("" ::: "memory");
+  });
+  print("scatter of the forces", scatter);
+  // the whole batch as the force loop runs it, without barriers between
+  // the phases
+  print("whole batch (damped, single geometry)", [&](const unsigned int f) {
+    gather_family_grid(row.U.data(), grid(f), ug);
+    gather_family_grid(row.V.data(), grid(f), vg);
+    if constexpr (lanes_of<Vec> == W)
+      {
+        expand_family(ug, ub, std::make_integer_sequence<unsigned int, 8>{});
+        expand_family(vg, vb, std::make_integer_sequence<unsigned int, 8>{});
+      }
+    sink += kernel<SingleData<>, true>(sd(f), ug, vg, ub, vb, fb);
+    scatter_family(row.F.data(), grid(f), fb, std::make_integer_sequence<unsigned int, 8>{});
+  });
+  std::printf("  (checksum %g)\n", sink + row.F[7]);
+  return 0;
+}
