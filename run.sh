@@ -12,6 +12,7 @@
 #                               bench_paper_single.prm and bench_block.prm on 1 and 2 ranks (or the rank
 #                               counts N given); figures appended to bench/results.csv,
 #                               after the machine's measured FMA peak and memory bandwidth
+#                               and the element loop's family batch on cached data
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
 #                               directory (and the comparison with a second run) into DIR/plots,
 #                               with the half-space solution of the patch's load and traction

@@ -127,8 +127,9 @@ namespace WheelRail
     /** Floats widened to doubles, as many as @p V has lanes (exact). With
      *  AVX-512, 8 lanes by one conversion from memory: GCC 12 lowers
      *  __builtin_convertvector from 8 floats to 8 doubles as two
-     *  half-width conversions, an extract and an insert, which took a fifth
-     *  of the single-geometry kernel's time (doc/performance_avx512.md).
+     *  half-width conversions, an extract and an insert, with which the
+     *  damped single-geometry kernel took 12-14 % longer
+     *  (doc/performance_kernel.md).
      *  (The masked form of the intrinsic, all lanes set, is the same
      *  instruction; the plain one's undefined source trips
      *  -Wmaybe-uninitialized in GCC 12.) */
