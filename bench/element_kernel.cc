@@ -169,12 +169,10 @@ main(int argc, char **argv)
   const auto sd = [&](const unsigned int f) {
     return &row.single_data[std::size_t(f) * SingleField::n_double];
   };
-  // a phase timed alone reads what the one before wrote; the empty asm
-  // keeps the compiler from dropping its stores
+  // the phases as the force loop runs them, one after the other
   const auto gather = [&](const unsigned int f) {
     gather_family_grid(row.U.data(), grid(f), ug);
     gather_family_grid(row.V.data(), grid(f), vg);
-    asm volatile("" ::: "memory");
   };
   const auto expand = [&](const unsigned int) {
     if constexpr (lanes_of<Vec> == W)
@@ -182,11 +180,9 @@ main(int argc, char **argv)
         expand_family(ug, ub, std::make_integer_sequence<unsigned int, 8>{});
         expand_family(vg, vb, std::make_integer_sequence<unsigned int, 8>{});
       }
-    asm volatile("" ::: "memory");
   };
   const auto scatter = [&](const unsigned int f) {
     scatter_family(row.F.data(), grid(f), fb, std::make_integer_sequence<unsigned int, 8>{});
-    asm volatile("" ::: "memory");
   };
   for (unsigned int f = 0; f < n_families; ++f)
     gather(f), expand(f);
@@ -198,34 +194,32 @@ main(int argc, char **argv)
   const auto print = [&](const char *name, const auto &phase) {
     std::printf("  %-44s %6.2f\n", name, best_ns_per_cell(row, repetitions, phase));
   };
-  print("gather of u and v (27 grid nodes each)", gather);
-  print("expansion to vertex vectors", expand);
-  // (the forces of a kernel timed alone count as used)
-  print("kernel, damped, double geometry", [&](const unsigned int f) {
+  // a phase timed alone reads what the one before wrote; the empty asm
+  // after it keeps the compiler from dropping its stores as unused
+  const auto print_alone = [&](const char *name, const auto &phase) {
+    print(name, [&](const unsigned int f) {
+      phase(f);
+      asm volatile("" ::: "memory");
+    });
+  };
+  print_alone("gather of u and v (27 grid nodes each)", gather);
+  print_alone("expansion to vertex vectors", expand);
+  print_alone("kernel, damped, double geometry", [&](const unsigned int f) {
     sink += kernel<DoubleData<>, true>(dd(f), ug, vg, ub, vb, fb);
-    asm volatile("" ::: "memory");
   });
-  print("kernel, damped, single geometry", [&](const unsigned int f) {
+  print_alone("kernel, damped, single geometry", [&](const unsigned int f) {
     sink += kernel<SingleData<>, true>(sd(f), ug, vg, ub, vb, fb);
-    asm volatile("" ::: "memory");
   });
-  print("kernel, undamped, single geometry", [&](const unsigned int f) {
+  print_alone("kernel, undamped, single geometry", [&](const unsigned int f) {
     sink += kernel<SingleData<>, false>(sd(f), ug, vg, ub, vb, fb);
-    asm volatile("" ::: "memory");
   });
-  print("scatter of the forces", scatter);
-  // the whole batch as the force loop runs it, without barriers between
-  // the phases
+  print_alone("scatter of the forces", scatter);
+  // the whole batch without barriers between its phases, as the loop
   print("whole batch (damped, single geometry)", [&](const unsigned int f) {
-    gather_family_grid(row.U.data(), grid(f), ug);
-    gather_family_grid(row.V.data(), grid(f), vg);
-    if constexpr (lanes_of<Vec> == W)
-      {
-        expand_family(ug, ub, std::make_integer_sequence<unsigned int, 8>{});
-        expand_family(vg, vb, std::make_integer_sequence<unsigned int, 8>{});
-      }
+    gather(f);
+    expand(f);
     sink += kernel<SingleData<>, true>(sd(f), ug, vg, ub, vb, fb);
-    scatter_family(row.F.data(), grid(f), fb, std::make_integer_sequence<unsigned int, 8>{});
+    scatter(f);
   });
   std::printf("  (checksum %g)\n", sink + row.F[7]);
   return 0;

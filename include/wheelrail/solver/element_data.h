@@ -13,15 +13,12 @@
 #include <cstddef>
 #include <utility>
 
-#ifdef __AVX512F__
-#  include <immintrin.h>
-#endif
-
 #define WHEELRAIL_ALWAYS_INLINE inline __attribute__((always_inline))
 
 /** Whether the target's vector registers hold 8 doubles (AVX-512). */
 #ifdef __AVX512F__
 #  define WHEELRAIL_EIGHT_LANE_REGISTERS 1
+#  include <immintrin.h>
 #else
 #  define WHEELRAIL_EIGHT_LANE_REGISTERS 0
 #endif
@@ -137,7 +134,7 @@ namespace WheelRail
     WHEELRAIL_ALWAYS_INLINE V
     load_widened(const float *p)
     {
-#ifdef __AVX512F__
+#if WHEELRAIL_EIGHT_LANE_REGISTERS
       if constexpr (lanes_of<V> == 8)
         return (V)_mm512_maskz_cvtps_pd(0xFF, _mm256_loadu_ps(p));
 #endif
