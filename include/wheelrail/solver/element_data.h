@@ -18,9 +18,11 @@
 /** Whether the target's vector registers hold 8 doubles (AVX-512). */
 #ifdef __AVX512F__
 #  define WHEELRAIL_EIGHT_LANE_REGISTERS 1
-#  include <immintrin.h>
 #else
 #  define WHEELRAIL_EIGHT_LANE_REGISTERS 0
+#endif
+#ifdef __SSE2__
+#  include <immintrin.h>
 #endif
 
 namespace WheelRail
@@ -121,15 +123,15 @@ namespace WheelRail
       typedef float type __attribute__((vector_size(8)));
     };
 
-    /** Floats widened to doubles, as many as @p V has lanes (exact). With
-     *  AVX-512, 8 lanes by one conversion from memory: GCC 12 lowers
-     *  __builtin_convertvector from 8 floats to 8 doubles as two
-     *  half-width conversions, an extract and an insert, with which the
-     *  damped single-geometry kernel took 12-14 % longer
-     *  (doc/performance_kernel.md).
-     *  (The masked form of the intrinsic, all lanes set, is the same
-     *  instruction; the plain one's undefined source trips
-     *  -Wmaybe-uninitialized in GCC 12.) */
+    /** Floats widened to doubles, as many as @p V has lanes (exact), by one
+     *  conversion from memory on x86-64 (vcvtps2pd of 8, 4 or 2 floats).
+     *  GCC 12 lowers __builtin_convertvector of 8 or 4 floats as two
+     *  half-width conversions, an extract and an insert (of 2 floats: two
+     *  scalar conversions and an unpack); with the split the damped
+     *  single-geometry kernel took 12-14 % longer on AVX-512
+     *  (doc/performance_kernel.md). The masked form of the 8-lane
+     *  intrinsic, all lanes set, is the same instruction; the plain one's
+     *  undefined source trips -Wmaybe-uninitialized in GCC 12. */
     template <typename V>
     WHEELRAIL_ALWAYS_INLINE V
     load_widened(const float *p)
@@ -137,6 +139,14 @@ namespace WheelRail
 #if WHEELRAIL_EIGHT_LANE_REGISTERS
       if constexpr (lanes_of<V> == 8)
         return (V)_mm512_maskz_cvtps_pd(0xFF, _mm256_loadu_ps(p));
+#endif
+#ifdef __AVX__
+      if constexpr (lanes_of<V> == 4)
+        return (V)_mm256_cvtps_pd(_mm_loadu_ps(p));
+#endif
+#ifdef __SSE2__
+      if constexpr (lanes_of<V> == 2)
+        return (V)_mm_cvtps_pd(_mm_castsi128_ps(_mm_loadl_epi64((const __m128i *)p)));
 #endif
       typename FloatLanes<V>::type x;
       __builtin_memcpy(&x, p, sizeof(x));
