@@ -12,7 +12,8 @@
 #                               bench_paper_single.prm and bench_block.prm on 1 and 2 ranks (or the rank
 #                               counts N given); figures appended to bench/results.csv,
 #                               after the machine's measured FMA peak and memory bandwidth
-#                               and the element loop's family batch on cached data
+#                               and the element loop's family batch on cached data (build/
+#                               element_kernel) and an exchange between 2 ranks (build/mpi_exchange)
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
 #                               directory (and the comparison with a second run) into DIR/plots,
 #                               with the half-space solution of the patch's load and traction
@@ -112,6 +113,8 @@ run_bench() {
   triad=$(echo "$limits" | sed -n 's/.*STREAM triad.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
   # the element loop's floor on this host: its family batch on cached data
   "$top/build/element_kernel"
+  # one synchronisation's own cost, apart from the ranks waiting for each other
+  mpirun -np 2 "$top/build/mpi_exchange"
   local case dir rows=0
   for case in paper paper_single block; do
     dir=results/bench
@@ -183,7 +186,7 @@ case "$verb" in
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'
+    sed -n '2,/^[^#]/{/^#/p}' "$0" | sed 's/^# \{0,1\}//'
     ;;
   *.prm)
     np=2
@@ -201,7 +204,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//' >&2
+    sed -n '2,/^[^#]/{/^#/p}' "$0" | sed 's/^# \{0,1\}//' >&2
     exit 1
     ;;
 esac
