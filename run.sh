@@ -140,6 +140,11 @@ run_bench() {
   { head -1 "$csv"; tail -n "$rows" "$csv"; } | cut -d, -f4- | column -s, -t || true
 }
 
+# The comment block at the top of this file, from its second line.
+usage() {
+  sed -n '2,/^[^#]/{/^#/p}' "$0" | sed 's/^# \{0,1\}//'
+}
+
 verb=${1:-default}
 case "$verb" in
   default)
@@ -186,7 +191,7 @@ case "$verb" in
     run_bench "$@"
     ;;
   help|-h|--help)
-    sed -n '2,/^[^#]/{/^#/p}' "$0" | sed 's/^# \{0,1\}//'
+    usage
     ;;
   *.prm)
     np=2
@@ -204,7 +209,7 @@ case "$verb" in
     ;;
   *)
     echo "run.sh: unknown verb '$verb'" >&2
-    sed -n '2,/^[^#]/{/^#/p}' "$0" | sed 's/^# \{0,1\}//' >&2
+    usage >&2
     exit 1
     ;;
 esac
