@@ -5,6 +5,7 @@
 #include <wheelrail/simulator/simulator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -12,6 +13,86 @@
 namespace WheelRail
 {
   using Report::fmt;
+
+  namespace
+  {
+    /**
+     * The timed parts of the steps and of the contact (@p contact_parts,
+     * printed where @p with_contact): each rank's own on up to eight ranks,
+     * else each part's largest and smallest time over the ranks. The times
+     * are gathered on rank 0, which prints them.
+     */
+    void
+    print_split(const ConditionalOStream &out,
+                const MPI_Comm            communicator,
+                const double (&parts)[6],
+                const std::array<double, 6> &contact_parts,
+                const bool                   with_contact)
+    {
+      const char *const names[6] = {
+        "elements", "contact", "update", "communication", "energies", "output"};
+      const char *const contact_names[6] = {
+        "search", "wait", "positions", "slaves", "exchange", "forces"};
+      std::vector<double> local(parts, parts + 6);
+      local.insert(local.end(), contact_parts.begin(), contact_parts.end());
+      const std::vector<std::vector<double>> all = Utilities::MPI::gather(communicator, local, 0);
+      if (all.empty())
+        return; // not rank 0
+      const unsigned int n_ranks = all.size();
+      const auto         line    = [&](const char *const *labels,
+                            const unsigned int first,
+                            const unsigned int digits,
+                            const auto        &value_of) {
+        for (unsigned int i = 0; i < 6; ++i)
+          out << " " << labels[i] << " " << value_of(first + i, digits);
+        out << std::endl;
+      };
+      if (n_ranks <= 8)
+        {
+          const char *by_rank = n_ranks > 1 ? " by rank (s):" : " (s):";
+          for (const unsigned int block : {0u, 1u})
+            {
+              if (block == 1 && !with_contact)
+                break;
+              out << (block == 0 ? "  split" : "  contact split") << by_rank;
+              if (n_ranks > 1)
+                out << std::endl;
+              for (unsigned int r = 0; r < n_ranks; ++r)
+                {
+                  if (n_ranks > 1)
+                    out << "    rank " << r << ":";
+                  line(block == 0 ? names : contact_names,
+                       6 * block,
+                       block == 0 ? 4 : 3,
+                       [&](const unsigned int k, const unsigned int digits) {
+                         return fmt(all[r][k], digits);
+                       });
+                }
+            }
+          return;
+        }
+      // many ranks: each part's extremes over them
+      for (const unsigned int block : {0u, 1u})
+        {
+          if (block == 1 && !with_contact)
+            break;
+          out << (block == 0 ? "  split" : "  contact split")
+              << ", largest / smallest time over the ranks (s):";
+          line(block == 0 ? names : contact_names,
+               6 * block,
+               3,
+               [&](const unsigned int k, const unsigned int digits) {
+                 double most = all[0][k], least = all[0][k];
+                 for (const auto &rank : all)
+                   {
+                     most  = std::max(most, rank[k]);
+                     least = std::min(least, rank[k]);
+                   }
+                 return fmt(most, digits) + " / " + fmt(least, digits);
+               });
+        }
+    }
+  } // namespace
 
 
 
@@ -56,16 +137,16 @@ namespace WheelRail
     const StepTimes   &t       = solver->step_times();
     const double       cells   = triangulation.n_global_active_cells();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    // the slowest rank sets the pace: maxima over the ranks
+    // Each rank's parts: the run goes at the pace of the slowest rank in
+    // each part, and a faster rank's lead shows up as waiting in the next
+    // part that meets the other ranks (the contact's first reduction, or the
+    // communication). timing.csv keeps each part's largest time over the ranks.
     const double local[6] = {
       t.elements, t.contact, t.update, t.communication, t.energies, output_seconds};
-    double slowest[6], fastest[6];
+    double slowest[6];
     Utilities::MPI::max(ArrayView<const double>(local, 6),
                         mpi_communicator,
                         ArrayView<double>(slowest, 6));
-    Utilities::MPI::min(ArrayView<const double>(local, 6),
-                        mpi_communicator,
-                        ArrayView<double>(fastest, 6));
     const double                         wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
     const Utilities::System::MemoryStats memory = [] {
       Utilities::System::MemoryStats m;
@@ -79,7 +160,6 @@ namespace WheelRail
     // the paper's full run: 0.22 m of rolling at 2.6e-8 s
     const double full_steps = 0.22 / parameters.wheelset.rolling_speed / 2.6e-8;
     const double full_hours = ns * 1e-9 * cells * full_steps / 3600.;
-    const char *names[6] = {"elements", "contact", "update", "communication", "energies", "output"};
 
     pcout << "Timing of " << n_steps << " steps (after " << parameters.output.timing_warmup_steps
           << " warm-up steps) on " << n_ranks << " rank(s), " << fmt(cells, 8) << " cells, "
@@ -89,38 +169,14 @@ namespace WheelRail
           << "  cells in family batches (8 cells arranged as the children of one "
              "parent: 27 nodes gathered "
              "and scattered, not 64): "
-          << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl
-          << "  split (slowest rank, s):";
-    for (unsigned int i = 0; i < 6; ++i)
-      pcout << " " << names[i] << " " << fmt(slowest[i], 4);
-    if (n_ranks > 1)
-      {
-        // the imbalance: what a fast rank's parts wait for shows up in the
-        // next part that communicates (the contact's position gather)
-        pcout << std::endl << "  split (fastest rank, s):";
-        for (unsigned int i = 0; i < 6; ++i)
-          pcout << " " << names[i] << " " << fmt(fastest[i], 4);
-      }
-    pcout << std::endl;
-    if (contact)
-      {
-        // the contact's parts, slowest and fastest rank (with one rank the
-        // same): where the contact time goes and what does not scale
-        const ContactTimes &c     = contact->times();
-        const double parts[6]     = {c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces};
-        const char *part_names[6] = {"search", "wait", "positions", "slaves", "exchange", "forces"};
-        double      most[6], least[6];
-        Utilities::MPI::max(ArrayView<const double>(parts, 6),
-                            mpi_communicator,
-                            ArrayView<double>(most, 6));
-        Utilities::MPI::min(ArrayView<const double>(parts, 6),
-                            mpi_communicator,
-                            ArrayView<double>(least, 6));
-        pcout << "  contact split (slowest / fastest rank, s):";
-        for (unsigned int i = 0; i < 6; ++i)
-          pcout << " " << part_names[i] << " " << fmt(most[i], 3) << " / " << fmt(least[i], 3);
-        pcout << std::endl;
-      }
+          << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl;
+    const ContactTimes  no_contact;
+    const ContactTimes &c = contact ? contact->times() : no_contact;
+    print_split(pcout,
+                mpi_communicator,
+                local,
+                {{c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces}},
+                contact != nullptr);
     // The wall time of single steps (this machine's noise: on a shared
     // host the same step's time varies by tens of per cent, and with
     // several ranks each step waits for the slowest): fastest, median and
@@ -149,7 +205,8 @@ namespace WheelRail
     std::ostringstream csv;
     csv
       << "# wheelrail timing: wall seconds of the timed steps (slowest rank), ns per element-step "
-         "(wall), peak resident memory per rank (largest) in MB\n"
+         "(wall), each part of the split its largest time over the ranks, peak resident memory per "
+         "rank (largest) in MB\n"
       << "ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,"
          "communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,"
          "fastest_step_ms,median_step_ms,p95_step_ms\n"
