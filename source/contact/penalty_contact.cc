@@ -342,10 +342,12 @@ namespace WheelRail
         check_initial_overlap();
       }
 
-    // forces on the owned DoFs, with the sign of internal forces
+    // forces on the owned DoFs, with the sign of internal forces; only the
+    // slaves evaluated at this step can be in contact (accumulate())
     for (const Pass &pass : passes)
-      for (const unsigned int s : pass.candidate_slaves)
+      for (const unsigned int c : pass.evaluated)
         {
+          const unsigned int      s     = pass.candidate_slaves[c];
           const ContactNodeState &state = pass.slaves[s];
           if (!state.in_contact)
             continue;
