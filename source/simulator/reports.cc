@@ -5,10 +5,11 @@
 #include <wheelrail/simulator/simulator.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 namespace WheelRail
 {
@@ -16,80 +17,60 @@ namespace WheelRail
 
   namespace
   {
+    /** Smallest and largest value of entry @p k over the rows of @p by_rank. */
+    std::pair<double, double>
+    extremes(const std::vector<std::vector<double>> &by_rank, const unsigned int k)
+    {
+      std::pair<double, double> range{by_rank[0][k], by_rank[0][k]};
+      for (const std::vector<double> &row : by_rank)
+        range = {std::min(range.first, row[k]), std::max(range.second, row[k])};
+      return range;
+    }
+
     /**
-     * The timed parts of the steps and of the contact (@p contact_parts,
-     * printed where @p with_contact): each rank's own on up to eight ranks,
-     * else each part's largest and smallest time over the ranks. The times
-     * are gathered on rank 0, which prints them.
+     * The timed parts of the steps (entries 0-5 of each row of @p by_rank,
+     * one row per rank) and of the contact (entries 6-11, printed where
+     * @p with_contact): each rank's own on up to eight ranks, else each
+     * part's largest and smallest time over the ranks. @p by_rank is empty
+     * except on rank 0, which prints.
      */
     void
-    print_split(const ConditionalOStream &out,
-                const MPI_Comm            communicator,
-                const double (&parts)[6],
-                const std::array<double, 6> &contact_parts,
-                const bool                   with_contact)
+    print_split(const ConditionalOStream               &out,
+                const std::vector<std::vector<double>> &by_rank,
+                const bool                              with_contact)
     {
-      const char *const names[6] = {
-        "elements", "contact", "update", "communication", "energies", "output"};
-      const char *const contact_names[6] = {
-        "search", "wait", "positions", "slaves", "exchange", "forces"};
-      std::vector<double> local(parts, parts + 6);
-      local.insert(local.end(), contact_parts.begin(), contact_parts.end());
-      const std::vector<std::vector<double>> all = Utilities::MPI::gather(communicator, local, 0);
-      if (all.empty())
-        return; // not rank 0
-      const unsigned int n_ranks = all.size();
-      const auto         line    = [&](const char *const *labels,
-                            const unsigned int first,
-                            const unsigned int digits,
-                            const auto        &value_of) {
-        for (unsigned int i = 0; i < 6; ++i)
-          out << " " << labels[i] << " " << value_of(first + i, digits);
-        out << std::endl;
-      };
-      if (n_ranks <= 8)
-        {
-          const char *by_rank = n_ranks > 1 ? " by rank (s):" : " (s):";
-          for (const unsigned int block : {0u, 1u})
-            {
-              if (block == 1 && !with_contact)
-                break;
-              out << (block == 0 ? "  split" : "  contact split") << by_rank;
-              if (n_ranks > 1)
-                out << std::endl;
-              for (unsigned int r = 0; r < n_ranks; ++r)
-                {
-                  if (n_ranks > 1)
-                    out << "    rank " << r << ":";
-                  line(block == 0 ? names : contact_names,
-                       6 * block,
-                       block == 0 ? 4 : 3,
-                       [&](const unsigned int k, const unsigned int digits) {
-                         return fmt(all[r][k], digits);
-                       });
-                }
-            }
-          return;
-        }
-      // many ranks: each part's extremes over them
+      if (by_rank.empty())
+        return;
+      const char *const names[2][6] = {
+        {"elements", "contact", "update", "communication", "energies", "output"},
+        {"search", "wait", "positions", "slaves", "exchange", "forces"}};
+      const unsigned int n_ranks = by_rank.size();
       for (const unsigned int block : {0u, 1u})
         {
           if (block == 1 && !with_contact)
             break;
-          out << (block == 0 ? "  split" : "  contact split")
-              << ", largest / smallest time over the ranks (s):";
-          line(block == 0 ? names : contact_names,
-               6 * block,
-               3,
-               [&](const unsigned int k, const unsigned int digits) {
-                 double most = all[0][k], least = all[0][k];
-                 for (const auto &rank : all)
-                   {
-                     most  = std::max(most, rank[k]);
-                     least = std::min(least, rank[k]);
-                   }
-                 return fmt(most, digits) + " / " + fmt(least, digits);
-               });
+          out << (block == 0 ? "  split" : "  contact split");
+          if (n_ranks > 8)
+            {
+              out << ", largest / smallest time over the ranks (s):";
+              for (unsigned int i = 0; i < 6; ++i)
+                {
+                  const auto [least, most] = extremes(by_rank, 6 * block + i);
+                  out << " " << names[block][i] << " " << fmt(most, 3) << " / " << fmt(least, 3);
+                }
+              out << std::endl;
+              continue;
+            }
+          out << (n_ranks > 1 ? " by rank (s):\n" : " (s):");
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            {
+              if (n_ranks > 1)
+                out << "    rank " << r << ":";
+              for (unsigned int i = 0; i < 6; ++i)
+                out << " " << names[block][i] << " "
+                    << fmt(by_rank[r][6 * block + i], block == 0 ? 4 : 3);
+              out << std::endl;
+            }
         }
     }
   } // namespace
@@ -141,12 +122,23 @@ namespace WheelRail
     // each part, and a faster rank's lead shows up as waiting in the next
     // part that meets the other ranks (the contact's first reduction, or the
     // communication). timing.csv keeps each part's largest time over the ranks.
-    const double local[6] = {
-      t.elements, t.contact, t.update, t.communication, t.energies, output_seconds};
-    double slowest[6];
-    Utilities::MPI::max(ArrayView<const double>(local, 6),
-                        mpi_communicator,
-                        ArrayView<double>(slowest, 6));
+    const ContactTimes                     no_contact;
+    const ContactTimes                    &c = contact ? contact->times() : no_contact;
+    const std::vector<std::vector<double>> by_rank =
+      Utilities::MPI::gather(mpi_communicator,
+                             std::vector<double>{t.elements,
+                                                 t.contact,
+                                                 t.update,
+                                                 t.communication,
+                                                 t.energies,
+                                                 output_seconds,
+                                                 c.search,
+                                                 c.wait,
+                                                 c.positions,
+                                                 c.slaves,
+                                                 c.exchange,
+                                                 c.forces},
+                             0);
     const double                         wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
     const Utilities::System::MemoryStats memory = [] {
       Utilities::System::MemoryStats m;
@@ -170,13 +162,7 @@ namespace WheelRail
              "parent: 27 nodes gathered "
              "and scattered, not 64): "
           << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl;
-    const ContactTimes  no_contact;
-    const ContactTimes &c = contact ? contact->times() : no_contact;
-    print_split(pcout,
-                mpi_communicator,
-                local,
-                {{c.search, c.wait, c.positions, c.slaves, c.exchange, c.forces}},
-                contact != nullptr);
+    print_split(pcout, by_rank, contact != nullptr);
     // The wall time of single steps (this machine's noise: on a shared
     // host the same step's time varies by tens of per cent, and with
     // several ranks each step waits for the slowest): fastest, median and
@@ -212,8 +198,9 @@ namespace WheelRail
          "fastest_step_ms,median_step_ms,p95_step_ms\n"
       << n_ranks << "," << cells << "," << solver->get_dof_handler().n_dofs() << "," << n_steps
       << "," << wall << "," << ns;
-    for (unsigned int i = 0; i < 6; ++i)
-      csv << "," << slowest[i];
+    // (rank 0 writes the file and alone holds by_rank)
+    for (unsigned int i = 0; i < 6 && !by_rank.empty(); ++i)
+      csv << "," << extremes(by_rank, i).second;
     csv << "," << peak_mb << "," << full_hours;
     for (unsigned int i = 0; i < 3; ++i)
       csv << "," << spread[i];
