@@ -188,6 +188,9 @@ namespace WheelRail
           << " steps of 2.6e-8 s) at this rate on " << fmt(cells, 8)
           << " cells: " << fmt(full_hours, 3) << " h" << std::endl;
 
+    // timing.csv: rank 0 alone holds by_rank and writes files
+    if (by_rank.empty())
+      return;
     std::ostringstream csv;
     csv
       << "# wheelrail timing: wall seconds of the timed steps (slowest rank), ns per element-step "
@@ -198,8 +201,7 @@ namespace WheelRail
          "fastest_step_ms,median_step_ms,p95_step_ms\n"
       << n_ranks << "," << cells << "," << solver->get_dof_handler().n_dofs() << "," << n_steps
       << "," << wall << "," << ns;
-    // (rank 0 writes the file and alone holds by_rank)
-    for (unsigned int i = 0; i < 6 && !by_rank.empty(); ++i)
+    for (unsigned int i = 0; i < 6; ++i)
       csv << "," << extremes(by_rank, i).second;
     csv << "," << peak_mb << "," << full_hours;
     for (unsigned int i = 0; i < 3; ++i)
