@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # wheelrail: set up, build and run.
 #   ./run.sh                    install missing packages, build (Release) into build/,
-#                               run prm/default.prm on 2 MPI ranks
+#                               run prm/default.prm on 2 MPI ranks and write its
+#                               report page (results/default/plots/report.html)
 #   ./run.sh test               same set-up, then the whole test suite (ctest)
 #   ./run.sh test-portable      the same suite on a build for any x86-64 CPU
 #                               (-DWHEELRAIL_NATIVE=OFF, in build-generic/): the
@@ -80,7 +81,19 @@ run_case() {
   fi
   local dir
   dir=$(sed -n 's/^[[:space:]]*set[[:space:]]\+Output directory[[:space:]]*=[[:space:]]*\(.*[^[:space:]]\)[[:space:]]*$/\1/p' "$prm" | tail -1)
-  echo "run.sh: results are in $(cd "${dir:-results}" && pwd)/ (open solution.pvd in ParaView; statistics; probe.csv; parameters.prm)"
+  run_dir=$(cd "${dir:-results}" && pwd)
+  echo "run.sh: results are in $run_dir/ (open solution.pvd in ParaView; statistics; probe.csv; parameters.prm)"
+}
+
+# The report page of the run just made (run_dir), with the ParaView files
+# beside it: the last thing the default case prints.
+report_case() {
+  echo "run.sh: writing the report page (scripts/plot.py $run_dir --hs-grid 48x33)"
+  /usr/bin/python3 scripts/plot.py "$run_dir" --hs-grid 48x33
+  echo "run.sh: ParaView: $run_dir/solution.pvd (the wheel and rail)"
+  [ -f "$run_dir/patch_series.xdmf" ] &&
+    echo "run.sh: ParaView: $run_dir/patch_series.xdmf (the contact patch as a movie)"
+  echo "run.sh: report:   $run_dir/plots/report.html"
 }
 
 # The speed benchmarks: prm/bench_paper.prm, prm/bench_paper_single.prm (the
@@ -150,6 +163,7 @@ case "$verb" in
   default)
     build
     run_case prm/default.prm 2
+    report_case
     ;;
   test)
     packages+=(chromium python3-vtk9) # the report page is rendered, the VTU files read back

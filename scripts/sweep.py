@@ -78,7 +78,10 @@ def write_case(base, out, law, mu, state=None):
              "end",
              "subsection Contact"]
     lines += ["  set %s = %s" % kv for kv in LAWS[law].items()]
-    lines += ["end", "subsection Wheelset", "  set Nominal traction coefficient = %g" % mu]
+    # the traction comes from the torque of mu_n (the paper's start), also on
+    # a base case that holds the creepage instead (prm/default.prm)
+    lines += ["end", "subsection Wheelset", "  set Nominal traction coefficient = %g" % mu,
+              "  set Initial creepage = 0", "  set Creepage control time = 0"]
     if state:
         lines.append("  set Static start state = %s" % os.path.abspath(state))
     lines += ["end", ""]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# ctest driver: the default case (exponential law, mu_n = 0.3, h 1.5 mm)
+# ctest driver: the paper's settings on the quick mesh (prm/quick_paper_settings.prm: exponential law, mu_n = 0.3, h 1.5 mm)
 # with the regularised friction of doc/friction_regularisation.md
 # (Slip rate = irreversible, Friction relaxation length = 10 um). Its patch
 # at instant t must have what steady rolling theory has and the paper's
@@ -11,7 +11,7 @@
 # change of scripts/hs_compare.py only, left the patch's centre node out of
 # both halves), eq. 5 - eq. 6 0.012, slip area 0.318 / 0.307, trailing s_n
 # 0.42 above the half-space's (0.17 / 0.12 m/s on 2026-11-25). The limits
-# leave room for round-off between hosts and for the default case's soft
+# leave room for round-off between hosts and for that case's soft
 # interface (SF 0.1 one-pass): it needs a creepage of -3.07e-3 for the F_x
 # that the half-space transmits at -2.20e-3, and the trailing slip velocity
 # is higher by about that ratio.
@@ -21,7 +21,7 @@ set -euo pipefail
 exe=$1 src=$2
 rm -rf out
 cat > case.prm <<PRM
-include $src/prm/default.prm
+include $src/prm/quick_paper_settings.prm
 subsection Problem
   set Output directory = out
 end

@@ -52,13 +52,16 @@ namespace WheelRail
 
     /** Print the fit's a, b, p0 against Hertz's for the normal force
      *  @p normal_force [N] (the parameters' radii and material), each with
-     *  its relative error and the verdict for @p tolerance; returns whether
-     *  all three are within it. */
+     *  its relative error and the verdict: for @p tolerance, or, where the
+     *  smallest cell size @p h [m] is given, for what the convergence study
+     *  expects at that h (expected_errors.h). Returns whether all three are
+     *  within their limits. */
     bool
     report_hertz_fit(const SimulatorAccess &access,
                      const EllipseFit      &fit,
                      const double           normal_force,
-                     const double           tolerance);
+                     const double           tolerance,
+                     const double           h = 0);
 
     /** Print the comparison for the normal force @p contact_force [N] of
      *  the static solve. */
