@@ -9,7 +9,9 @@
 # - tabs between words (include, subsection, set) work like spaces;
 # - CR-only line ends (old Mac) are read, with the right line numbers;
 # - an entry set again by a file that includes the first setting is an
-#   override; the same value twice in one file is accepted.
+#   override; the same value twice in one file is accepted;
+# - command-line errors name the argument, then print the usage text, and
+#   control characters in an argument are escaped.
 # Arguments: the wheelrail executable. Runs in its own build directory.
 set -uo pipefail
 exe=$1
@@ -97,6 +99,26 @@ printf "$bar"'subsection Time integration\n  set End time = 2e-3\n  set End time
   > same.prm
 run same.log same.prm
 check "same value twice accepted" test $rc -eq 0
+
+# the command line
+printf "$bar" > ok.prm
+cli() { # NAME MESSAGE ARGS...
+  local name=$1 message=$2; shift 2
+  run cli.log "$@"
+  check "$name refused" test $rc -ne 0
+  check "$name named" grep -qF "Error: $message" cli.log
+  check "$name: usage" grep -q "^Usage: wheelrail CASE.prm" cli.log
+}
+cli "unknown option" "unknown option '--resme'" ok.prm --resme
+cli "unknown short option" "unknown option '-x'" -x ok.prm
+cli "two case files" "two case files, 'ok.prm' and 'cr.prm': give one" ok.prm cr.prm
+cli "--resume first" "'--resume' without a case file before it" --resume ok.prm
+cli "no case file" "no case file given"
+cli "empty argument" "argument 1 is empty, not a case file" ""
+cli "escape in an argument" "unknown option '--\x1b[2J'" $'--\e[2J'
+check "no raw ESC printed" bash -c "! grep -q $'\e' cli.log"
+run help.log ok.prm --help
+check "--help after the file: help" grep -q "^Parameters (defaults shown)" help.log
 
 if [ $status -ne 0 ]; then
   for f in *.log; do echo "--- $f"; head -c 2000 "$f"; done
