@@ -110,6 +110,8 @@ main(int argc, char **argv)
       for (std::size_t pos = 0; (pos = message.find(input, pos)) != std::string::npos;
            pos += name.size())
         message.replace(pos, input.size(), name);
+    // what the user wrote is echoed without terminal control characters
+    message = WheelRail::ParameterFile::printable(message);
     if (ranks == 1)
       {
         std::cerr << "Error: " << message << std::endl;
