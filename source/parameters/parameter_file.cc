@@ -4,6 +4,7 @@
 #include <wheelrail/parameters/parameter_file.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -35,7 +36,10 @@ namespace WheelRail
         return Utilities::trim(line.substr(0, hash));
       }
 
-      /** @p statement without @p keyword ("set ", "subsection "), or "" if it does not start so. */
+      /**
+       * @p statement without @p keyword ("set ", "subsection ", in lower or
+       * in upper case), or "" if it does not start with it.
+       */
       std::string
       after_keyword(const std::string &statement, std::string keyword)
       {

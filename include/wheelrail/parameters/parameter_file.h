@@ -37,10 +37,11 @@ namespace WheelRail
      * by FILE's lines; a relative FILE is read relative to the directory of
      * the file that includes it (never the working directory); a file that
      * includes itself directly or through others, a directory, a missing or
-     * unreadable file, an unbalanced subsection/end in one file and a case
-     * file without any entry, a line longer than max_line_length, a read
-     * that fails and an entry set twice in one file to different values (a
-     * file may override an entry of a file it includes) are errors. A UTF-8
+     * unreadable file, a symbolic link loop, an unbalanced subsection/end in
+     * one file, a case file without any entry, a line longer than
+     * max_line_length, a read that fails, a line continued with '\' past the
+     * end of its file and an entry set twice in one file to different values
+     * (a file may override an entry of a file it includes) are errors. A UTF-8
      * byte-order mark is removed; a line ends at LF, CR LF or a lone CR; a
      * tab separates words as a space does.
      */
