@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/simulator/simulator.h>
 
@@ -30,6 +31,55 @@ namespace
            "       wheelrail --help             this text and every parameter with its\n"
            "                                    unit, default and allowed range\n";
   }
+
+  /** What the command line asks for. */
+  struct CommandLine
+  {
+    std::string input;          ///< the case file
+    bool        resume = false; ///< --resume after it
+    bool        help   = false; ///< --help or -h anywhere
+    std::string error;          ///< what is wrong with it, naming the argument; "" if nothing
+  };
+
+  /**
+   * The command line: a case file, then optionally --resume; --help or -h
+   * anywhere asks for the help text. The first thing wrong is named in the
+   * result's error.
+   */
+  CommandLine
+  read_command_line(const int argc, char **argv)
+  {
+    CommandLine line;
+    for (int i = 1; i < argc; ++i)
+      line.help = line.help || std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h";
+    for (int i = 1; i < argc && line.error.empty() && !line.help; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--resume")
+          {
+            if (line.input.empty())
+              line.error = "'--resume' without a case file before it: "
+                           "wheelrail CASE.prm --resume";
+            else if (line.resume)
+              line.error = "'--resume' is given twice";
+            line.resume = true;
+          }
+        else if (arg.size() > 1 && arg[0] == '-')
+          line.error = "unknown option '" + arg + "'" +
+                       (arg.size() > 4 && arg.compare(arg.size() - 4, 4, ".prm") == 0 ?
+                          " (a case file whose name begins with '-' is given as ./" + arg + ")" :
+                          std::string());
+        else if (arg.empty())
+          line.error = "argument " + std::to_string(i) + " is empty, not a case file";
+        else if (!line.input.empty())
+          line.error = "two case files, '" + line.input + "' and '" + arg + "': give one";
+        else
+          line.input = arg;
+      }
+    if (line.error.empty() && !line.help && line.input.empty())
+      line.error = "no case file given";
+    return line;
+  }
 } // namespace
 
 int
@@ -41,7 +91,8 @@ main(int argc, char **argv)
   const unsigned int               rank  = Utilities::MPI::this_mpi_process(comm);
   const unsigned int               ranks = Utilities::MPI::n_mpi_processes(comm);
 
-  const std::string input = argc > 1 ? argv[1] : "";
+  const CommandLine  command_line = read_command_line(argc, argv);
+  const std::string &input        = command_line.input;
   // errors meet on a communicator of their own, so that a rank that failed
   // alone cannot be matched with a collective the others are waiting in
   MPI_Comm error_comm;
@@ -59,6 +110,8 @@ main(int argc, char **argv)
       for (std::size_t pos = 0; (pos = message.find(input, pos)) != std::string::npos;
            pos += name.size())
         message.replace(pos, input.size(), name);
+    // what the user wrote is echoed without terminal control characters
+    message = WheelRail::ParameterFile::printable(message);
     if (ranks == 1)
       {
         std::cerr << "Error: " << message << std::endl;
@@ -99,8 +152,7 @@ main(int argc, char **argv)
       WheelRail::Parameters parameters;
       WheelRail::Parameters::declare_parameters(prm);
 
-      const std::string arg = argc > 1 ? argv[1] : "";
-      if (arg == "--help" || arg == "-h")
+      if (command_line.help)
         {
           if (rank == 0)
             {
@@ -110,15 +162,18 @@ main(int argc, char **argv)
             }
           return 0;
         }
-      const bool resume = argc == 3 && std::string(argv[2]) == "--resume";
-      if (argc != 2 && !resume)
+      if (!command_line.error.empty())
         {
           if (rank == 0)
-            print_usage(std::cerr);
+            {
+              std::cerr << "Error: " << WheelRail::ParameterFile::printable(command_line.error)
+                        << "\n\n";
+              print_usage(std::cerr);
+            }
           return 1;
         }
-      parameters.parse(prm, arg);
-      if (resume)
+      parameters.parse(prm, input);
+      if (command_line.resume)
         parameters.output.resume = true;
       WheelRail::Simulator simulator(parameters, prm, comm);
       simulator.run();

@@ -3,8 +3,12 @@
 
 #include <wheelrail/parameters/parameter_file.h>
 
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <new>
 #include <sstream>
 
 namespace WheelRail
@@ -32,18 +36,29 @@ namespace WheelRail
         return Utilities::trim(line.substr(0, hash));
       }
 
+      /**
+       * @p statement without @p keyword ("set ", "subsection ", in lower or
+       * in upper case), or "" if it does not start with it.
+       */
+      std::string
+      after_keyword(const std::string &statement, std::string keyword)
+      {
+        for (int upper = 0; upper < 2; ++upper)
+          {
+            if (statement.compare(0, keyword.size(), keyword) == 0)
+              return Utilities::trim(statement.substr(keyword.size()));
+            std::transform(keyword.begin(), keyword.end(), keyword.begin(), [](char c) {
+              return static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            });
+          }
+        return "";
+      }
+
       /** The target of an "include FILE" statement, or "" if none. */
       std::string
       include_target(const std::string &statement)
       {
-        for (const char *keyword : {"include", "INCLUDE"})
-          {
-            const std::string k(keyword);
-            if (statement.size() > k.size() && statement.compare(0, k.size(), k) == 0 &&
-                std::isspace(static_cast<unsigned char>(statement[k.size()])))
-              return Utilities::trim(statement.substr(k.size()));
-          }
-        return "";
+        return after_keyword(statement, "include ");
       }
 
       std::string
@@ -51,7 +66,182 @@ namespace WheelRail
       {
         return "Line <" + std::to_string(line) + "> of file <" + file + ">: ";
       }
+
+      /**
+       * Reads the next line of @p in into @p line, without its end: a line
+       * ends at LF, CR LF or a lone CR (files saved on Windows or old Macs).
+       * Returns false at the end of the input with nothing read. Stores at
+       * most max_line_length characters: @p too_long is set for a longer
+       * line, and the rest of it is left unread. A failed read throws (the
+       * file buffer reports it as std::ios_base::failure).
+       */
+      bool
+      next_line(std::streambuf &in, std::string &line, bool &too_long)
+      {
+        using traits = std::char_traits<char>;
+        line.clear();
+        too_long = false;
+        for (traits::int_type c = in.sbumpc();; c = in.sbumpc())
+          {
+            if (traits::eq_int_type(c, traits::eof()))
+              return !line.empty();
+            const char ch = traits::to_char_type(c);
+            if (ch == '\n')
+              return true;
+            if (ch == '\r')
+              {
+                if (traits::eq_int_type(in.sgetc(), traits::to_int_type('\n')))
+                  in.sbumpc();
+                return true;
+              }
+            if (line.size() == max_line_length)
+              {
+                too_long = true;
+                return true;
+              }
+            line += ch;
+          }
+      }
+
+      /**
+       * Checks that @p path names a readable regular file; @p who names it
+       * in the messages.
+       */
+      void
+      check_file(const std::filesystem::path &path, const std::string &who, const bool included)
+      {
+        std::error_code                    ec;
+        const std::filesystem::file_status status = std::filesystem::status(path, ec);
+        AssertThrow(ec != std::errc::too_many_symbolic_link_levels,
+                    ExcMessage(who + " is a symbolic link that leads back to itself (a link to "
+                                     "itself or a cycle of links), not a file."));
+        if (status.type() == std::filesystem::file_type::not_found)
+          {
+            std::error_code link_ec;
+            AssertThrow(!std::filesystem::is_symlink(
+                          std::filesystem::symlink_status(path, link_ec)),
+                        ExcMessage(who + " is a symbolic link to '" +
+                                   std::filesystem::read_symlink(path, link_ec).string() +
+                                   "', which does not exist."));
+            AssertThrow(false,
+                        ExcMessage(who + " does not exist" +
+                                   (included ? std::string(" (a relative include is read from the "
+                                                           "directory of the file that includes "
+                                                           "it).") :
+                                               std::string("."))));
+          }
+        AssertThrow(std::filesystem::status_known(status) &&
+                      status.type() != std::filesystem::file_type::unknown,
+                    ExcMessage(who + " cannot be reached: " + ec.message() + "."));
+        AssertThrow(!std::filesystem::is_directory(status),
+                    ExcMessage(who + " is a directory, not a parameter file."));
+        AssertThrow(std::filesystem::is_regular_file(status),
+                    ExcMessage(who + " is not a regular file."));
+      }
+
+
+
+      /**
+       * Checks statement @p s (the line @p number of @p filename, comments
+       * removed, continued lines joined): subsections open and close in
+       * order (@p sections holds the open ones), and no entry is set twice
+       * to different values (@p entries: the entries set so far, by full
+       * name, with value and line).
+       */
+      void
+      check_statement(const std::string                                           &s,
+                      const std::string                                           &filename,
+                      const unsigned int                                           number,
+                      std::vector<std::string>                                    &sections,
+                      std::map<std::string, std::pair<std::string, unsigned int>> &entries)
+      {
+        const std::string section = after_keyword(s, "subsection ");
+        if (!section.empty())
+          {
+            sections.push_back(section);
+            return;
+          }
+        if (s == "end" || s == "END")
+          {
+            AssertThrow(!sections.empty(),
+                        ExcMessage(where(filename, number) +
+                                   "'end' without a subsection to close."));
+            sections.pop_back();
+            return;
+          }
+        const std::string assignment = after_keyword(s, "set ");
+        const std::size_t equals     = assignment.find('=');
+        if (equals == std::string::npos)
+          return; // deal.II's parser names what is wrong
+        std::string name;
+        for (const std::string &open : sections)
+          name += open + "/";
+        name += Utilities::trim(assignment.substr(0, equals));
+        const std::string value      = Utilities::trim(assignment.substr(equals + 1));
+        const auto [previous, first] = entries.emplace(name, std::make_pair(value, number));
+        AssertThrow(first || previous->second.first == value,
+                    ExcMessage(where(filename, number) + "'" + name + "' is set to '" + value +
+                               "' here and to '" + previous->second.first + "' on line " +
+                               std::to_string(previous->second.second) +
+                               " of the same file: set each entry once in a file (a file may "
+                               "override what a file it includes sets)."));
+      }
     } // namespace
+
+
+
+    std::string
+    printable(const std::string &text)
+    {
+      static const char *const hex    = "0123456789abcdef";
+      const auto               escape = [&](const unsigned char c) {
+        return std::string("\\x") + hex[c >> 4] + hex[c & 15];
+      };
+      const auto continuation = [&](const std::size_t i, const unsigned char lo, unsigned char hi) {
+        return i < text.size() && static_cast<unsigned char>(text[i]) >= lo &&
+               static_cast<unsigned char>(text[i]) <= hi;
+      };
+      std::string result;
+      for (std::size_t i = 0; i < text.size();)
+        {
+          const unsigned char c = text[i];
+          if (c == '\t' || c == '\n' || (c >= 0x20 && c < 0x7f))
+            {
+              result += text[i++];
+              continue;
+            }
+          // a well-formed UTF-8 character other than a C1 control (U+0080
+          // to U+009F) is kept; anything else is escaped byte by byte
+          std::size_t length = 0;
+          if (c == 0xc2)
+            length = continuation(i + 1, 0xa0, 0xbf) ? 2 : 0;
+          else if (c >= 0xc3 && c <= 0xdf)
+            length = continuation(i + 1, 0x80, 0xbf) ? 2 : 0;
+          else if (c >= 0xe0 && c <= 0xef)
+            length = continuation(i + 1, c == 0xe0 ? 0xa0 : 0x80, c == 0xed ? 0x9f : 0xbf) &&
+                         continuation(i + 2, 0x80, 0xbf) ?
+                       3 :
+                       0;
+          else if (c >= 0xf0 && c <= 0xf4)
+            length = continuation(i + 1, c == 0xf0 ? 0x90 : 0x80, c == 0xf4 ? 0x8f : 0xbf) &&
+                         continuation(i + 2, 0x80, 0xbf) && continuation(i + 3, 0x80, 0xbf) ?
+                       4 :
+                       0;
+          if (length > 0)
+            {
+              result += text.substr(i, length);
+              i += length;
+            }
+          else if (c == 0xc2 && continuation(i + 1, 0x80, 0x9f))
+            {
+              result += escape(c) + escape(text[i + 1]);
+              i += 2;
+            }
+          else
+            result += escape(text[i++]);
+        }
+      return result;
+    }
 
 
 
@@ -63,10 +253,7 @@ namespace WheelRail
       bool               sets_something = false;
       std::istringstream lines(expanded);
       for (std::string line; std::getline(lines, line) && !sets_something;)
-        {
-          const std::string s = statement(line);
-          sets_something      = s.compare(0, 4, "set ") == 0 || s.compare(0, 4, "SET ") == 0;
-        }
+        sets_something = !after_keyword(statement(line), "set ").empty();
       AssertThrow(sets_something,
                   ExcMessage("The parameter file '" + filename +
                              "' sets no parameter (it is empty or holds only comments and "
@@ -83,62 +270,78 @@ namespace WheelRail
     {
       const std::string           who = chain.empty() ? "The parameter file '" + filename + "'" :
                                                         "The included file '" + filename + "'";
-      std::error_code             ec;
       const std::filesystem::path path(filename);
-      const std::filesystem::file_status status = std::filesystem::status(path, ec);
-      AssertThrow(std::filesystem::exists(status),
-                  ExcMessage(who + " does not exist" +
-                             (chain.empty() ? std::string(".") :
-                                              std::string(" (a relative include is read from the "
-                                                          "directory of the file that includes "
-                                                          "it)."))));
-      AssertThrow(!std::filesystem::is_directory(status),
-                  ExcMessage(who + " is a directory, not a parameter file."));
-      AssertThrow(std::filesystem::is_regular_file(status),
-                  ExcMessage(who + " is not a regular file."));
+      check_file(path, who, !chain.empty());
       std::ifstream in(filename, std::ios::binary);
-      AssertThrow(in.good(), ExcMessage(who + " cannot be opened (no read permission?)."));
+      AssertThrow(in.is_open(), ExcMessage(who + " cannot be opened (no read permission?)."));
 
+      std::error_code   ec;
       const std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
       chain.push_back(canonical);
       const std::filesystem::path directory = path.parent_path();
 
-      int          open_subsections = 0;
-      unsigned int number           = 0;
-      bool         continued        = false; // the previous line ended in '\'
-      for (std::string line; std::getline(in, line);)
+      std::vector<std::string> sections; // the subsections open in this file
+      // the entries this file sets: full name -> value and line
+      std::map<std::string, std::pair<std::string, unsigned int>> entries;
+      std::string  joined;          // a statement continued over lines ending in '\'
+      unsigned int joined_from = 0; // its first line
+      unsigned int number      = 0;
+      for (std::string line;;)
         {
+          bool too_long = false;
+          try
+            {
+              if (!next_line(*in.rdbuf(), line, too_long))
+                break;
+            }
+          catch (const std::exception &e)
+            {
+              AssertThrow(false,
+                          ExcMessage(where(filename, number + 1) + "reading the file failed (" +
+                                     e.what() + ")."));
+            }
           ++number;
+          AssertThrow(!too_long,
+                      ExcMessage(where(filename, number) + "the line is longer than " +
+                                 std::to_string(max_line_length) +
+                                 " characters, the most a parameter file's line may hold."));
           if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
             line.erase(0, 3);
-          if (!line.empty() && line.back() == '\r')
-            line.pop_back();
           AssertThrow(line.find('\0') == std::string::npos,
                       ExcMessage(where(filename, number) +
                                  "a NUL byte: this is not a text parameter file."));
+          // a tab separates words as a space does (deal.II's parser reads
+          // it so too)
+          std::replace(line.begin(), line.end(), '\t', ' ');
 
-          const std::string s       = statement(line);
-          const bool        is_cont = continued;
-          const std::string trimmed = Utilities::trim(line);
-          continued                 = !trimmed.empty() && trimmed.back() == '\\';
-          const std::string target  = is_cont ? std::string() : include_target(s);
+          const bool        is_cont   = joined_from > 0;
+          const std::string trimmed   = Utilities::trim(line);
+          const bool        continues = !trimmed.empty() && trimmed.back() == '\\';
+          const std::string target =
+            is_cont || continues ? std::string() : include_target(statement(line));
           if (target.empty())
             {
               if (!is_cont)
+                joined_from = number;
+              joined += continues ? trimmed.substr(0, trimmed.size() - 1) : trimmed;
+              if (!continues)
                 {
-                  if (s.compare(0, 11, "subsection ") == 0 || s.compare(0, 11, "SUBSECTION ") == 0)
-                    ++open_subsections;
-                  else if (s == "end" || s == "END")
-                    {
-                      AssertThrow(open_subsections > 0,
-                                  ExcMessage(where(filename, number) +
-                                             "'end' without a subsection to close."));
-                      --open_subsections;
-                    }
+                  check_statement(statement(joined), filename, joined_from, sections, entries);
+                  joined.clear();
+                  joined_from = 0;
                 }
-              expanded += line;
-              expanded += '\n';
-              origin.emplace_back(filename, number);
+              try
+                {
+                  expanded += line;
+                  expanded += '\n';
+                  origin.emplace_back(filename, number);
+                }
+              catch (const std::bad_alloc &)
+                {
+                  AssertThrow(false,
+                              ExcMessage(where(filename, number) +
+                                         "out of memory for the parameter files' text."));
+                }
               continue;
             }
 
@@ -180,8 +383,11 @@ namespace WheelRail
                                          "': " + text));
             }
         }
-      AssertThrow(open_subsections == 0,
-                  ExcMessage(who + " leaves " + std::to_string(open_subsections) +
+      AssertThrow(joined_from == 0,
+                  ExcMessage(where(filename, joined_from) +
+                             "the statement is continued with '\\' past the end of the file."));
+      AssertThrow(sections.empty(),
+                  ExcMessage(who + " leaves " + std::to_string(sections.size()) +
                              " subsection(s) without 'end'."));
       chain.pop_back();
     }

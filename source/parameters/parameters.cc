@@ -47,6 +47,12 @@ namespace WheelRail
     wheelset.parse_parameters(prm);
     output.parse_parameters(prm);
     verification.parse_parameters(prm);
+    // the directory's name is printed as it is
+    AssertThrow(ParameterFile::printable(problem.output_directory) == problem.output_directory,
+                ExcMessage("Problem/Output directory '" +
+                           ParameterFile::printable(problem.output_directory) +
+                           "' holds a terminal control character or a byte that is no UTF-8: "
+                           "name the directory in printable characters."));
     // validate the expressions now, so that a typo stops the run at once
     make_vector_function(initial.velocity_expression,
                          initial.velocity_constants,

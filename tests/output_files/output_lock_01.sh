@@ -26,9 +26,9 @@ snapshot() {
 }
 
 cp "$src/tests/output_files/bar.prm" first.prm
-{ cat first.prm; printf 'subsection Problem\n  set Output directory = alone\nend\n'; } > alone.prm
-{ cat first.prm; printf 'subsection Time integration\n  set End time = 1e-3\nend\n'; } > second.prm
-{ cat first.prm; printf 'subsection Time integration\n  set Time step = 1.6e-6\nend\n'; } > rejected.prm
+{ echo 'include first.prm'; printf 'subsection Problem\n  set Output directory = alone\nend\n'; } > alone.prm
+{ echo 'include first.prm'; printf 'subsection Time integration\n  set End time = 1e-3\nend\n'; } > second.prm
+{ echo 'include first.prm'; printf 'subsection Time integration\n  set Time step = 1.6e-6\nend\n'; } > rejected.prm
 rm -rf run alone
 "$exe" alone.prm > alone.log
 
@@ -72,8 +72,8 @@ cmp -s before.md5 after.md5 || fail "the rejected run changed the directory"
 echo "rejected run: the directory unchanged"
 
 # a run killed with SIGKILL leaves no stale lock: the next run goes ahead
-{ cat first.prm; printf 'subsection Problem\n  set Output directory = killed\nend\n'; } > killed.prm
-{ cat killed.prm; printf 'subsection Problem\n  set Dry run = true\nend\n'; } > after_kill.prm
+{ echo 'include first.prm'; printf 'subsection Problem\n  set Output directory = killed\nend\n'; } > killed.prm
+{ echo 'include killed.prm'; printf 'subsection Problem\n  set Dry run = true\nend\n'; } > after_kill.prm
 rm -rf killed
 "$exe" killed.prm > killed.log 2>&1 &
 pid=$!

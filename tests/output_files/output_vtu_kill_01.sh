@@ -13,7 +13,7 @@ fail() {
   echo "FAILED: $*"
   exit 1
 }
-{ cat "$src/tests/output_files/bar.prm"
+{ echo "include $src/tests/output_files/bar.prm"
   printf 'subsection Problem\n  set Test mode = false\nend\n'
   printf 'subsection Output\n  set VTU interval = 50\n  set VTU compression = none\nend\n'
 } > vtu.prm

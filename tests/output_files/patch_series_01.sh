@@ -24,7 +24,7 @@ exe=$1 src=$2
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 bash "$(dirname "$0")/rolling_case.sh" "$src" whole > whole.prm
 printf 'subsection Output\n  set Patch series interval = 20\nend\n' >> whole.prm
-{ cat whole.prm; printf 'subsection Problem\n  set Output directory = split\nend\nsubsection Output\n  set Stop after step = 310\nend\n'; } > split.prm
+{ echo 'include whole.prm'; printf 'subsection Problem\n  set Output directory = split\nend\nsubsection Output\n  set Stop after step = 310\nend\n'; } > split.prm
 rm -rf whole split
 mpirun -np 2 "$exe" whole.prm > whole.log
 mpirun -np 2 "$exe" split.prm > split.log

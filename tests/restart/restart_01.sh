@@ -11,7 +11,7 @@ run() {
   if [ "$np" -gt 1 ]; then mpirun -np "$np" "$exe" "$@"; else "$exe" "$@"; fi
 }
 sed "s#@SOURCE_DIR@#$src/tests/restart#" "$src/tests/restart/restart_01.prm.in" > whole.prm
-{ cat whole.prm; printf 'subsection Problem\n  set Output directory = split\nend\nsubsection Output\n  set Stop after step = 100\nend\n'; } > split.prm
+{ echo 'include whole.prm'; printf 'subsection Problem\n  set Output directory = split\nend\nsubsection Output\n  set Stop after step = 100\nend\n'; } > split.prm
 rm -rf run split
 run whole.prm > whole.log
 run split.prm > split.log

@@ -75,7 +75,7 @@ cp saved/* run/checkpoint/
 snapshot > before.md5
 
 # physics edited: every differing entry named with both values
-{ cat base.prm
+{ echo 'include base.prm'
   printf "subsection Material\n  set Young's modulus = 2.0e11\nend\n"
   printf "subsection Contact\n  set Static friction coefficient = 0.4\nend\n"
   printf "subsection Time integration\n  set Time step = 1.4e-6\n  set End time = 4e-4\nend\n"
@@ -87,12 +87,12 @@ grep -F "Time integration/Time step: 0 -> 1.4e-6" refused.log
 if grep -F "End time" refused.log | grep -qv "Only these"; then fail "End time listed as refused"; fi
 
 # an End time before the checkpoint
-{ cat base.prm; printf "subsection Time integration\n  set End time = 1e-4\nend\n"; } > early.prm
+{ echo 'include base.prm'; printf "subsection Time integration\n  set End time = 1e-4\nend\n"; } > early.prm
 refused early.prm "is reached at step 67, and the checkpoint in 'run/checkpoint' is at step 100"
 
 # the same values written otherwise are no change; End time and the
 # statistics interval may change, and are listed
-{ cat base.prm
+{ echo 'include base.prm'
   printf "subsection Material\n  set Young's modulus = 210e9\nend\n"
   printf "subsection Time integration\n  set End time = 4.0e-4\nend\n"
   printf "subsection Output\n  set Statistics interval = 20\nend\n"

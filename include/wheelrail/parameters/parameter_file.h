@@ -10,6 +10,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,6 +19,17 @@ namespace WheelRail
 {
   namespace ParameterFile
   {
+    /** The longest line a parameter file may hold, in bytes (64 KiB). */
+    constexpr std::size_t max_line_length = 65536;
+
+    /**
+     * @p text with terminal control characters (C0 but tab and newline,
+     * DEL, C1 and bytes that are no UTF-8) written as \xNN, so that echoing
+     * what a user wrote cannot drive the terminal.
+     */
+    std::string
+    printable(const std::string &text);
+
     /**
      * A parameter file with its includes expanded in place.
      *
@@ -25,9 +37,13 @@ namespace WheelRail
      * by FILE's lines; a relative FILE is read relative to the directory of
      * the file that includes it (never the working directory); a file that
      * includes itself directly or through others, a directory, a missing or
-     * unreadable file, an unbalanced subsection/end in one file and a case
-     * file without any entry are errors. A UTF-8 byte-order mark and
-     * carriage returns at line ends (files saved on Windows) are removed.
+     * unreadable file, a symbolic link loop, an unbalanced subsection/end in
+     * one file, a case file without any entry, a line longer than
+     * max_line_length, a read that fails, a line continued with '\' past the
+     * end of its file and an entry set twice in one file to different values
+     * (a file may override an entry of a file it includes) are errors. A UTF-8
+     * byte-order mark is removed; a line ends at LF, CR LF or a lone CR; a
+     * tab separates words as a space does.
      */
     class ExpandedText
     {
