@@ -53,6 +53,35 @@ namespace WheelRail
 
 
 
+  namespace
+  {
+    /**
+     * An entry of @p directory (the first by name) that shows that it is
+     * not a wheelrail output directory: "" if the directory does not exist,
+     * is empty, or holds the lock file or parameters.prm of a run (the lock
+     * is written first).
+     */
+    std::string
+    foreign_entry(const std::string &directory)
+    {
+      std::error_code ec;
+      if (!std::filesystem::is_directory(directory, ec))
+        return "";
+      std::string first;
+      for (const auto &entry : std::filesystem::directory_iterator(directory, ec))
+        {
+          const std::string name = entry.path().filename().string();
+          if (name == ".wheelrail.lock" || name == "parameters.prm")
+            return "";
+          if (first.empty() || name < first)
+            first = name;
+        }
+      return first;
+    }
+  } // namespace
+
+
+
   void
   Simulator::prepare_output_directory()
   {
@@ -65,17 +94,28 @@ namespace WheelRail
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
         std::error_code ec;
-        std::filesystem::create_directories(output_directory, ec);
-        if (ec)
+        const std::string foreign = foreign_entry(output_directory);
+        if (!foreign.empty())
           {
             ok      = 0;
-            message = ec.message();
+            message = "Problem/Output directory '" + output_directory +
+                      "' already holds files that no wheelrail run wrote (e.g. '" + foreign +
+                      "'): the run would write its own among them. Choose a new or empty "
+                      "directory, or a previous run's output directory.";
+          }
+        else
+          {
+            std::filesystem::create_directories(output_directory, ec);
+            if (ec)
+              {
+                ok      = 0;
+                message = "Cannot create Problem/Output directory '" + output_directory +
+                          "': " + ec.message();
+              }
           }
       }
     ok = Utilities::MPI::min(ok, mpi_communicator);
-    AssertThrow(ok,
-                ExcMessage("Cannot create Problem/Output directory '" + output_directory +
-                           "': " + message));
+    AssertThrow(ok, ExcMessage(Utilities::MPI::broadcast(mpi_communicator, message, 0)));
     // rank 0 holds the lock; a directory in use stops every rank
     std::string error;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)

@@ -87,3 +87,24 @@ if wait $pid; then fail "the run was not killed"; fi
 "$exe" after_kill.prm > after_kill.log 2>&1 || { cat after_kill.log; fail "the run after a killed one was refused"; }
 grep -q "^pid $pid " killed/.wheelrail.lock && fail "the lock note still names the killed run"
 echo "after kill -9: the next run took the lock"
+
+# a directory that holds files no wheelrail run wrote is refused, on 1 and 2
+# ranks, before anything is written there (not even the lock file)
+rm -rf foreign
+mkdir -p foreign/src
+echo "notes" > foreign/notes.txt
+{ echo 'include first.prm'; printf 'subsection Problem\n  set Output directory = foreign\nend\n'; } > foreign.prm
+snapshot foreign all > before.md5
+for np in 1 2; do
+  if [ $np -gt 1 ]; then
+    mpirun -np $np "$exe" foreign.prm > foreign.log 2>&1 && fail "a foreign directory was accepted on $np ranks"
+  else
+    "$exe" foreign.prm > foreign.log 2>&1 && fail "a foreign directory was accepted"
+  fi
+  grep -o "Error: Problem/Output directory 'foreign' already holds files that no wheelrail run wrote (e.g. 'notes.txt')" foreign.log ||
+    { cat foreign.log; fail "no message naming the directory and a foreign file"; }
+  [ "$(grep -c "Error" foreign.log)" = 1 ] || { cat foreign.log; fail "more than one message on $np ranks"; }
+  snapshot foreign all > after.md5
+  cmp -s before.md5 after.md5 && [ ! -e foreign/.wheelrail.lock ] || fail "the refused run changed the directory"
+done
+echo "foreign directory: refused on 1 and 2 ranks, nothing written"
