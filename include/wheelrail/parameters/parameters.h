@@ -137,7 +137,8 @@ namespace WheelRail
   struct SolverParameters
   {
     double       end_time;
-    double       time_step; ///< 0 = automatic
+    double       time_step;       ///< 0 = automatic
+    bool         allow_long_runs; ///< confirms > 1e8 steps or a step < 1e-3 of the stable one
     double       courant_factor;
     double       hourglass_coefficient;
     std::string  damping_model; ///< "none", "stiffness", "Rayleigh"
