@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameters/consistency.h>
 #include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
 
@@ -60,5 +61,7 @@ namespace WheelRail
                          boundary.prescribed_velocity_constants,
                          "x,y,z,t",
                          "Boundary conditions/Prescribed velocity");
+    // the entries against each other, before anything is built
+    Consistency::check_loads(*this);
   }
 } // namespace WheelRail
