@@ -63,5 +63,6 @@ namespace WheelRail
                          "Boundary conditions/Prescribed velocity");
     // the entries against each other, before anything is built
     Consistency::check_loads(*this);
+    Consistency::check_wheel_and_rail(*this);
   }
 } // namespace WheelRail

@@ -1,7 +1,8 @@
 /**
  * @file parameters/consistency.h
  * Checks of the parameters against each other before anything is built:
- * the loads (applied force, prescribed velocity, gravity) over the run.
+ * the loads (applied force, prescribed velocity, gravity) over the run,
+ * and the wheel-rail geometry against the rolling path.
  */
 #ifndef wheelrail_parameters_consistency_h
 #define wheelrail_parameters_consistency_h
@@ -63,6 +64,16 @@ namespace WheelRail
      */
     void
     check_loads(const Parameters &p);
+
+    /**
+     * Refuse a wheel-rail geometry whose parts do not fit: a solution
+     * zone mostly (more than half) off the rail, the contact patch with as
+     * much rail again beyond it leaving the rail over the run, and a
+     * Static solve/Axle load that the run replaces by the wheelset's
+     * weight.
+     */
+    void
+    check_wheel_and_rail(const Parameters &p);
   } // namespace Consistency
 } // namespace WheelRail
 

@@ -243,6 +243,10 @@ namespace WheelRail
   /** The implicit static contact solve (SPEC 5.2). */
   struct StaticParameters
   {
+    /** Default of Axle load [N]: (13.4 t + 0.9 t) g, the paper's. A run
+     *  that does not use the Axle load takes this value as "not given". */
+    static constexpr double default_axle_load = 140300;
+
     double       axle_load;
     double       load_tolerance;
     double       newton_tolerance;
