@@ -79,7 +79,8 @@ namespace WheelRail
                       Patterns::Double(0, 1e-2),
                       "Time step of the central-difference scheme [s], range "
                       "[0, 1e-2]; 0 = the stable step times the Courant "
-                      "factor. A value above the stable step is an error. "
+                      "factor. A value above the stable step is an error, one "
+                      "under a thousandth of it needs Allow long runs. "
                       "The paper: 2.6e-8 s.");
     prm.declare_entry("Allow long runs",
                       "false",
