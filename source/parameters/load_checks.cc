@@ -99,15 +99,20 @@ namespace WheelRail
                   const std::string &expression,
                   const std::string &constants,
                   const std::string &entry,
-                  const double       t_end)
+                  const double       t_end,
+                  const bool         over_the_bodies)
     {
       const auto function          = make_vector_function(expression, constants, "x,y,z,t", entry);
-      const auto [lo, hi]          = bounding_box(p);
-      std::vector<Point<3>> points = {0.5 * (lo + hi)};
-      for (unsigned int c = 0; c < 8; ++c)
-        points.emplace_back((c & 1) ? hi[0] : lo[0],
-                            (c & 2) ? hi[1] : lo[1],
-                            (c & 4) ? hi[2] : lo[2]);
+      std::vector<Point<3>> points = {Point<3>()};
+      if (over_the_bodies)
+        {
+          const auto [lo, hi] = bounding_box(p);
+          points              = {0.5 * (lo + hi)};
+          for (unsigned int c = 0; c < 8; ++c)
+            points.emplace_back((c & 1) ? hi[0] : lo[0],
+                                (c & 2) ? hi[1] : lo[1],
+                                (c & 4) ? hi[2] : lo[2]);
+        }
       Peak               peak;
       const unsigned int n = 100;
       for (unsigned int k = 0; k <= n; ++k)
@@ -168,8 +173,8 @@ namespace WheelRail
       if (!b.applied_force_ids.empty())
         {
           const std::string entry = "Boundary conditions/Applied force";
-          const Peak        peak =
-            peak_over_run(p, b.applied_force_expression, b.applied_force_constants, entry, t_end);
+          const Peak        peak  = peak_over_run(
+            p, b.applied_force_expression, b.applied_force_constants, entry, t_end, false);
           not_finite(entry, b.applied_force_expression, peak, "F", "N");
           const double strain = peak.magnitude / (m.youngs_modulus * size.cross_section());
           AssertThrow(strain <= max_load_strain,
@@ -185,8 +190,12 @@ namespace WheelRail
       if (!b.prescribed_velocity_ids.empty())
         {
           const std::string entry = "Boundary conditions/Prescribed velocity";
-          const Peak        peak  = peak_over_run(
-            p, b.prescribed_velocity_expression, b.prescribed_velocity_constants, entry, t_end);
+          const Peak        peak  = peak_over_run(p,
+                                          b.prescribed_velocity_expression,
+                                          b.prescribed_velocity_constants,
+                                          entry,
+                                          t_end,
+                                          true);
           not_finite(entry, b.prescribed_velocity_expression, peak, "v", "m/s");
           const double c = m.wave_speed();
           AssertThrow(peak.magnitude <= c,

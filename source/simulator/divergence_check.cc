@@ -145,13 +145,15 @@ namespace WheelRail
                                          prm.boundary.applied_force_expression,
                                          prm.boundary.applied_force_constants,
                                          "Boundary conditions/Applied force",
-                                         t);
+                                         t,
+                                         false);
     if (!prm.boundary.prescribed_velocity_ids.empty())
       velocity = Consistency::peak_over_run(prm,
                                             prm.boundary.prescribed_velocity_expression,
                                             prm.boundary.prescribed_velocity_constants,
                                             "Boundary conditions/Prescribed velocity",
-                                            t);
+                                            t,
+                                            true);
     const double       force_strain = force.magnitude / (material.youngs_modulus * section);
     const double       stable       = access.solver.stable_time_step();
     const double       critical     = stable / access.parameters.solver.courant_factor;

@@ -46,15 +46,19 @@ namespace WheelRail
     /**
      * The largest |f(x, t)| of the vector expression @p expression
      * (variables x,y,z,t; @p entry names it in messages) at 101 times
-     * evenly over [0, @p t_end] and at the corners and the centre of the
-     * bodies' bounding box; the first non-finite value if there is one.
+     * evenly over [0, @p t_end], at the corners and the centre of the
+     * bodies' bounding box with @p over_the_bodies (a field such as the
+     * prescribed velocity), else at x = 0 (the applied total force, which
+     * the solver evaluates there); the first non-finite value if there is
+     * one.
      */
     Peak
     peak_over_run(const Parameters  &p,
                   const std::string &expression,
                   const std::string &constants,
                   const std::string &entry,
-                  const double       t_end);
+                  const double       t_end,
+                  const bool         over_the_bodies);
 
     /**
      * Refuse an applied force, a prescribed velocity or a gravity that is
