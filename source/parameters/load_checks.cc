@@ -1,11 +1,13 @@
 /**
  * @file parameters/load_checks.cc
  * The loads of a run checked before anything is built: the applied force
- * and the prescribed velocity sampled over the run, and the gravity, each
- * refused when it is not finite or absurd by itself.
+ * and the prescribed velocity sampled over the run, the initial velocity
+ * over the bodies, and the gravity, each refused when it is not finite or
+ * absurd by itself.
  */
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/function_parser.h>
 
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/parameters/consistency.h>
@@ -70,6 +72,57 @@ namespace WheelRail
 
 
 
+      /** The centre and the corners of the bodies' bounding box. */
+      std::vector<Point<3>>
+      body_points(const Parameters &p)
+      {
+        const auto [lo, hi]          = bounding_box(p);
+        std::vector<Point<3>> points = {0.5 * (lo + hi)};
+        for (unsigned int c = 0; c < 8; ++c)
+          points.emplace_back((c & 1) ? hi[0] : lo[0],
+                              (c & 2) ? hi[1] : lo[1],
+                              (c & 4) ? hi[2] : lo[2]);
+        return points;
+      }
+
+
+
+      /** The largest |f| at @p points and 101 times over [0, @p t_end]
+       *  (once at t = 0 if t_end is 0); the first non-finite value. */
+      Peak
+      peak_of(FunctionParser<3> &function, const std::vector<Point<3>> &points, const double t_end)
+      {
+        Peak               peak;
+        const unsigned int n = t_end > 0 ? 100 : 0;
+        for (unsigned int k = 0; k <= n; ++k)
+          {
+            const double t = n > 0 ? t_end * k / n : 0.;
+            function.set_time(t);
+            for (const Point<3> &x : points)
+              {
+                Tensor<1, 3> f;
+                for (unsigned int d = 0; d < 3; ++d)
+                  {
+                    f[d] = function.value(x, d);
+                    if (!std::isfinite(f[d]))
+                      return {std::numeric_limits<double>::infinity(), t, d, f[d]};
+                  }
+                // |f| scaled by its largest component: finite where f is
+                unsigned int largest = 0;
+                for (unsigned int d = 1; d < 3; ++d)
+                  if (std::abs(f[d]) > std::abs(f[largest]))
+                    largest = d;
+                const double scale     = std::abs(f[largest]);
+                const double magnitude = scale > 0 ? scale * (f / scale).norm() : 0.;
+                if (magnitude > peak.magnitude)
+                  peak = {magnitude, t, largest, f[largest]};
+              }
+          }
+        return peak;
+      }
+
+
+
       /** "Fx", "vy", ... */
       std::string
       component_name(const char *prefix, const unsigned int d)
@@ -102,44 +155,10 @@ namespace WheelRail
                   const double       t_end,
                   const bool         over_the_bodies)
     {
-      const auto function          = make_vector_function(expression, constants, "x,y,z,t", entry);
-      std::vector<Point<3>> points = {Point<3>()};
-      if (over_the_bodies)
-        {
-          const auto [lo, hi] = bounding_box(p);
-          points              = {0.5 * (lo + hi)};
-          for (unsigned int c = 0; c < 8; ++c)
-            points.emplace_back((c & 1) ? hi[0] : lo[0],
-                                (c & 2) ? hi[1] : lo[1],
-                                (c & 4) ? hi[2] : lo[2]);
-        }
-      Peak               peak;
-      const unsigned int n = 100;
-      for (unsigned int k = 0; k <= n; ++k)
-        {
-          const double t = t_end * k / n;
-          function->set_time(t);
-          for (const Point<3> &x : points)
-            {
-              Tensor<1, 3> f;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  f[d] = function->value(x, d);
-                  if (!std::isfinite(f[d]))
-                    return {std::numeric_limits<double>::infinity(), t, d, f[d]};
-                }
-              // |f| scaled by its largest component: finite where f is
-              unsigned int largest = 0;
-              for (unsigned int d = 1; d < 3; ++d)
-                if (std::abs(f[d]) > std::abs(f[largest]))
-                  largest = d;
-              const double scale     = std::abs(f[largest]);
-              const double magnitude = scale > 0 ? scale * (f / scale).norm() : 0.;
-              if (magnitude > peak.magnitude)
-                peak = {magnitude, t, largest, f[largest]};
-            }
-        }
-      return peak;
+      const auto function = make_vector_function(expression, constants, "x,y,z,t", entry);
+      return peak_of(*function,
+                     over_the_bodies ? body_points(p) : std::vector<Point<3>>{Point<3>()},
+                     t_end);
     }
 
 
@@ -209,6 +228,33 @@ namespace WheelRail
                                  " at once). Check the expression and its constants (a velocity "
                                  "in m/s)."));
         }
+
+      {
+        // the initial velocity field: a spread of v/c is a strain of that
+        // order at once (the divergence diagnosis names it from 5 % of c)
+        const std::string entry    = "Initial conditions/Velocity function";
+        const auto        function = make_vector_function(p.initial.velocity_expression,
+                                                   p.initial.velocity_constants,
+                                                   "x,y,z",
+                                                   entry);
+        const Peak        peak     = peak_of(*function, body_points(p), 0.);
+        const double      c        = m.wave_speed();
+        AssertThrow(std::isfinite(peak.magnitude),
+                    ExcMessage(entry + " = '" + p.initial.velocity_expression +
+                               "' is not finite on the bodies (" +
+                               component_name("v", peak.component) + " = " + fmt(peak.value) +
+                               " m/s at the centre or a corner of their bounding box): give an "
+                               "expression that "
+                               "is finite over the bodies."));
+        AssertThrow(peak.magnitude <= max_load_strain * c,
+                    ExcMessage(entry + " = '" + p.initial.velocity_expression + "' reaches " +
+                               fmt(peak.magnitude, 3) +
+                               " m/s on the bodies, more than 100 times the dilatational wave "
+                               "speed " +
+                               fmt(c, 4) +
+                               " m/s: a strain of that order at once, beyond any elastic body. "
+                               "Check the expression and its constants (a velocity in m/s)."));
+      }
 
       const Tensor<1, 3> &g = p.solver.gravity;
       for (unsigned int d = 0; d < 3; ++d)

@@ -61,10 +61,11 @@ namespace WheelRail
                   const bool         over_the_bodies);
 
     /**
-     * Refuse an applied force, a prescribed velocity or a gravity that is
-     * not finite during the run or absurd by itself: a load whose weight
-     * or force alone strains the bodies by more than 100, a prescribed
-     * velocity faster than the dilatational wave speed.
+     * Refuse an applied force, a prescribed velocity, an initial velocity
+     * or a gravity that is not finite during the run (on the bodies) or
+     * absurd by itself: a load whose weight or force alone strains the
+     * bodies by more than 100, a prescribed velocity faster than the
+     * dilatational wave speed, an initial velocity more than 100 times it.
      */
     void
     check_loads(const Parameters &p);
