@@ -139,6 +139,8 @@ namespace WheelRail
         "Problem/Output directory",
         "Problem/Dry run",
         "Time integration/End time",
+        // confirms a longer End time; the integrated state does not see it
+        "Time integration/Allow long runs",
         "Output/Report interval",
         "Output/Statistics interval",
         "Output/VTU interval",

@@ -193,6 +193,7 @@ namespace WheelRail
           const std::string                         &geometry_type,
           parallel::distributed::Triangulation<dim> &triangulation)
     {
+      internal::check_coarse_cell_estimate(p, geometry_type, triangulation.get_communicator());
       std::vector<Point<dim>>    vertices;
       std::vector<CellData<dim>> cells;
       if (geometry_type == "bar")

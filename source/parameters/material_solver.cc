@@ -79,8 +79,16 @@ namespace WheelRail
                       Patterns::Double(0, 1e-2),
                       "Time step of the central-difference scheme [s], range "
                       "[0, 1e-2]; 0 = the stable step times the Courant "
-                      "factor. A value above the stable step is an error. "
+                      "factor. A value above the stable step is an error, one "
+                      "under a thousandth of it needs Allow long runs. "
                       "The paper: 2.6e-8 s.");
+    prm.declare_entry("Allow long runs",
+                      "false",
+                      Patterns::Bool(),
+                      "Confirms an explicit run of more than 1e8 steps (End time / "
+                      "step), or with a Time step below a thousandth of the stable "
+                      "step [-]: without it such a run is refused before it starts, "
+                      "with its step count and an estimate of its wall time.");
     prm.declare_entry("Courant factor",
                       "0.9",
                       Patterns::Double(0.01, 1.0),
@@ -135,6 +143,7 @@ namespace WheelRail
     prm.enter_subsection("Time integration");
     end_time                      = prm.get_double("End time");
     time_step                     = prm.get_double("Time step");
+    allow_long_runs               = prm.get_bool("Allow long runs");
     courant_factor                = prm.get_double("Courant factor");
     hourglass_coefficient         = prm.get_double("Hourglass coefficient");
     damping_model                 = prm.get("Damping model");

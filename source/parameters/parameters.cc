@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameters/consistency.h>
 #include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
 
@@ -66,5 +67,8 @@ namespace WheelRail
                          boundary.prescribed_velocity_constants,
                          "x,y,z,t",
                          "Boundary conditions/Prescribed velocity");
+    // the entries against each other, before anything is built
+    Consistency::check_loads(*this);
+    Consistency::check_wheel_and_rail(*this);
   }
 } // namespace WheelRail

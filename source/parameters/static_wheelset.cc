@@ -19,11 +19,14 @@ namespace WheelRail
   {
     prm.enter_subsection("Static solve");
     prm.declare_entry("Axle load",
-                      "140300",
+                      "140300", // default_axle_load
                       Patterns::Double(0, 1e8),
                       "Vertical force F_N of the wheel on the rail sought by "
                       "the static contact solve [N], range [0, 1e8]; the paper: "
-                      "(13.4 t + 0.9 t) g = 140.3 kN.");
+                      "(13.4 t + 0.9 t) g = 140.3 kN. Only the static contact solve "
+                      "uses it: with Boundary conditions/Wheel bore = rigid axle the "
+                      "wheel load is the weight of the Wheelset masses, and an Axle "
+                      "load other than that weight is refused there.");
     prm.declare_entry("Load tolerance",
                       "1e-4",
                       Patterns::Double(1e-12, 0.1),

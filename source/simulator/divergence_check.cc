@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <wheelrail/mesh/geometry.h>
+#include <wheelrail/parameters/consistency.h>
 #include <wheelrail/simulator/divergence_check.h>
 #include <wheelrail/simulator/format.h>
 
@@ -133,10 +134,30 @@ namespace WheelRail
     const double              c        = material.wave_speed();
     const double              gravity_strain =
       material.density * access.parameters.solver.gravity.norm() * extent / material.youngs_modulus;
-    const double       dt       = access.solver.time_step();
-    const double       stable   = access.solver.stable_time_step();
-    const double       critical = stable / access.parameters.solver.courant_factor;
-    const double       h_min    = critical * c; // the smallest element length
+    const double dt = access.solver.time_step();
+    // the applied force and the prescribed velocity at their largest so far
+    const Parameters &prm     = access.parameters;
+    const double      t       = n * dt;
+    const auto        section = Consistency::body_size(prm).cross_section();
+    Consistency::Peak force, velocity;
+    if (!prm.boundary.applied_force_ids.empty())
+      force = Consistency::peak_over_run(prm,
+                                         prm.boundary.applied_force_expression,
+                                         prm.boundary.applied_force_constants,
+                                         "Boundary conditions/Applied force",
+                                         t,
+                                         false);
+    if (!prm.boundary.prescribed_velocity_ids.empty())
+      velocity = Consistency::peak_over_run(prm,
+                                            prm.boundary.prescribed_velocity_expression,
+                                            prm.boundary.prescribed_velocity_constants,
+                                            "Boundary conditions/Prescribed velocity",
+                                            t,
+                                            true);
+    const double       force_strain = force.magnitude / (material.youngs_modulus * section);
+    const double       stable       = access.solver.stable_time_step();
+    const double       critical     = stable / access.parameters.solver.courant_factor;
+    const double       h_min        = critical * c; // the smallest element length
     std::ostringstream message;
     message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
             << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
@@ -145,8 +166,9 @@ namespace WheelRail
                     fmt(access.parameters.output.divergence_limit) :
                   std::string("NaN or infinite energy"))
             << "; " << location << ". Likely cause: ";
-    // the causes in the order in which one hides the next: a load or an
-    // initial state beyond small strains, a contact the search missed, the
+    // the causes in the order in which one hides the next: a load (gravity,
+    // the applied force, the prescribed velocity) or an initial state
+    // beyond small strains, a contact the search missed, the
     // contact penalty, the time step
     if (velocity_spread > 0.05 * c)
       message << "the initial velocity: its components differ by up to " << fmt(velocity_spread, 4)
@@ -157,6 +179,19 @@ namespace WheelRail
       message << "the gravity " << fmt(access.parameters.solver.gravity.norm(), 4)
               << " m/s^2: its weight alone strains a body of " << fmt(extent, 3) << " m by about "
               << fmt(gravity_strain, 3) << " (Time integration/Gravity)";
+    else if (force_strain > 1e-2)
+      message << "the applied force, up to " << fmt(force.magnitude, 4)
+              << " N (at t = " << fmt(force.t) << " s): on the mean cross-section "
+              << fmt(section, 3) << " m^2 of the bodies it alone strains them by about "
+              << fmt(force_strain, 3) << " (Boundary conditions/Applied force = '"
+              << prm.boundary.applied_force_expression << "')";
+    else if (velocity.magnitude > 0.05 * c)
+      message << "the prescribed velocity, up to " << fmt(velocity.magnitude, 4)
+              << " m/s (at t = " << fmt(velocity.t) << " s), "
+              << fmt(100 * velocity.magnitude / c, 3) << " % of the wave speed " << fmt(c, 4)
+              << " m/s, i.e. strains of that order at once (Boundary conditions/Prescribed "
+                 "velocity = '"
+              << prm.boundary.prescribed_velocity_expression << "')";
     else if (access.contact && deepest_penetration > 0.5 * h_min)
       message << "a contact missed or overrun: slave nodes reached "
               << fmt(deepest_penetration * 1e3, 3)

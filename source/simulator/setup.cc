@@ -187,6 +187,8 @@ namespace WheelRail
       }
     else
       solver->set_time_step(solver->stable_time_step());
+    if (parameters.problem.mode == "explicit dynamics")
+      check_run_length();
 
     // the setup has succeeded: from here on the run owns the directory's
     // files (a rejected run leaves the previous run's parameters.prm)
@@ -203,6 +205,52 @@ namespace WheelRail
       run_static_contact();
     else
       run_static_check();
+  }
+
+
+
+  void
+  Simulator::check_run_length() const
+  {
+    // the explicit step's wall time per cell on one rank, the paper case
+    // in bench/results.csv (61 ns; 35.7 ns on 2 ranks): divided by the
+    // ranks, a lower estimate for a larger mesh
+    constexpr double        seconds_per_cell_step = 61e-9;
+    constexpr double        max_steps             = 1e8;
+    constexpr double        min_fraction          = 1e-3;
+    const SolverParameters &sp                    = parameters.solver;
+    const double            dt                    = solver->time_step();
+    const double            stable                = solver->stable_time_step();
+    const double            steps                 = std::ceil(sp.end_time / dt - 1e-9);
+    const bool              too_many              = steps > max_steps;
+    const bool              too_fine = sp.time_step > 0 && sp.time_step < min_fraction * stable;
+    if (sp.allow_long_runs || !(too_many || too_fine))
+      return;
+    const double cells = triangulation.n_global_active_cells();
+    const double ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const double wall  = steps * cells * seconds_per_cell_step / ranks;
+    std::string  cause;
+    if (too_fine)
+      cause = "Time integration/Time step = " + fmt(sp.time_step) + " s is " +
+              fmt(sp.time_step / stable, 3) + " of the stable step " + fmt(stable) +
+              " s (under the thousandth that wheelrail runs unasked), and ";
+    else
+      cause = "Time integration/";
+    cause += "End time = " + fmt(sp.end_time) + " s takes " + fmt(steps, 3) + " steps" +
+             (too_many ? " (more than 1e8)" : "") + ", at least about " +
+             (wall > 2 * 86400 ? fmt(wall / 86400, 3) + " days" :
+              wall > 7200      ? fmt(wall / 3600, 3) + " hours" :
+                                 fmt(wall, 3) + " s") +
+             " of wall time over " + fmt(cells) + " cell(s) on " + fmt(ranks) +
+             " rank(s) (at 61 ns per cell and step on one rank, the paper case's "
+             "benchmark, divided by the ranks; small meshes take longer per cell)";
+    AssertThrow(false,
+                ExcMessage(
+                  cause + ": " +
+                  (too_fine ? "set Time step = 0 (the stable step) or a larger one, " : "") +
+                  "reduce End time" + (too_fine ? "" : " or coarsen the mesh") +
+                  ", or set Time integration/Allow long runs = true to run it as it "
+                  "is."));
   }
 
 

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
 
 namespace WheelRail
 {
@@ -126,6 +127,30 @@ namespace WheelRail
       /** Physical memory of the machines that run @p comm [bytes]. */
       double
       physical_memory(const MPI_Comm comm);
+
+
+
+      /**
+       * The number of coarse cells that build() makes of geometry
+       * @p geometry_type, counted from the parameters without building
+       * them (the wheel's as for unaligned coarse lines: the aligned ones
+       * differ by a few cells).
+       */
+      double
+      coarse_cell_estimate(const GeometryParameters &p, const std::string &geometry_type);
+
+
+
+      /**
+       * Stop the run before its coarse mesh is built when the coarse mesh
+       * has more than the cells that wheelrail takes (every rank holds the
+       * whole coarse mesh) or needs more than the physical memory of the
+       * machines of @p comm.
+       */
+      void
+      check_coarse_cell_estimate(const GeometryParameters &p,
+                                 const std::string        &geometry_type,
+                                 const MPI_Comm            comm);
     } // namespace internal
   }   // namespace Geometry
 } // namespace WheelRail

@@ -137,7 +137,8 @@ namespace WheelRail
   struct SolverParameters
   {
     double       end_time;
-    double       time_step; ///< 0 = automatic
+    double       time_step;       ///< 0 = automatic
+    bool         allow_long_runs; ///< confirms > 1e8 steps or a step < 1e-3 of the stable one
     double       courant_factor;
     double       hourglass_coefficient;
     std::string  damping_model; ///< "none", "stiffness", "Rayleigh"
@@ -242,6 +243,10 @@ namespace WheelRail
   /** The implicit static contact solve (SPEC 5.2). */
   struct StaticParameters
   {
+    /** Default of Axle load [N]: (13.4 t + 0.9 t) g, the paper's. A run
+     *  that does not use the Axle load takes this value as "not given". */
+    static constexpr double default_axle_load = 140300;
+
     double       axle_load;
     double       load_tolerance;
     double       newton_tolerance;

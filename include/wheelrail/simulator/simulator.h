@@ -65,6 +65,11 @@ namespace WheelRail
     prepare_output_directory();
     void
     print_setup_summary();
+    /** Refuse an explicit run of more than 1e8 steps or with a Time step
+     *  under a thousandth of the stable one, unless Time integration/Allow
+     *  long runs confirms it. */
+    void
+    check_run_length() const;
     /** Where the implicit solver's iterations go: the screen of rank 0,
      *  or nowhere in test mode and on the other ranks. */
     std::ostream &
