@@ -66,10 +66,10 @@ namespace WheelRail
       const std::string         rail = "the rail (Geometry/Rail/Start x = " + fmt(g.rail_start_x) +
                                " m, End x = " + fmt(g.rail_end_x) + " m)";
 
-      // the solution zone, centred on O, on the rail head: at least half
-      // of it along x and across (the refinement clips the rest; tests
-      // have zones 10 mm beyond the rail's end and 15 mm beyond the sides
-      // of its head)
+      // the solution zone, centred on O, on the rail head: across, within
+      // the head's width; along x at least half of it on the rail (a zone
+      // that reaches past a rail end refines nothing there: the rail's
+      // part is clipped at the end, and tests have zones 10 mm past it)
       if (g.zone_length > 0)
         {
           const double on_rail = std::min(0.5 * g.zone_length, g.rail_end_x) -
@@ -83,14 +83,15 @@ namespace WheelRail
                                                 "wholly off " + rail) +
                                  ". Move the rail (Start x, End x) to take in O = 0 and the zone, "
                                  "or shorten the zone."));
-          AssertThrow(g.zone_half_width <= g.rail_head_width,
+          AssertThrow(g.zone_half_width <= 0.5 * g.rail_head_width * (1 + 1e-12),
                       ExcMessage(
                         "Geometry/Mesh/Solution zone half width = " + fmt(g.zone_half_width) +
-                        " m makes the solution zone more than twice as wide as the rail "
-                        "head (Geometry/Rail/Head width = " +
-                        fmt(g.rail_head_width) +
-                        " m): most of it lies off the rail. Reduce the half width to at "
-                        "most half the head width, or widen the head."));
+                        " m makes the solution zone wider than the rail head "
+                        "(Geometry/Rail/Head width = " +
+                        fmt(g.rail_head_width) + " m): " +
+                        (g.zone_half_width > g.rail_head_width ? "most of it" : "part of it") +
+                        " lies off the rail. Reduce the half width to at most half the head "
+                        "width, or widen the head."));
         }
 
       // the wheel load: the masses' weight on the rigid axle, Axle load in
