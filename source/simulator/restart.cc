@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/base/checkpoint.h>
+#include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace WheelRail
@@ -75,18 +77,27 @@ namespace WheelRail
   {
     // every rank writes its part into checkpoint.new/, then rank 0 swaps
     // it for checkpoint/: the previous checkpoint stays until the new one
-    // is complete
+    // is complete. A failure on the way removes checkpoint.new/ (rank 0's
+    // guard) and stops every rank with one message.
     const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
     const std::string  fresh  = output_directory + "/checkpoint.new";
     const std::string  target = output_directory + "/checkpoint";
     const std::string  old    = output_directory + "/checkpoint.old";
+    std::unique_ptr<TemporaryPath> guard;
+    std::string                    error;
     if (rank == 0)
       {
-        std::filesystem::remove_all(fresh);
-        std::filesystem::create_directories(fresh);
+        guard = std::make_unique<TemporaryPath>(fresh);
+        std::error_code ec;
+        std::filesystem::remove_all(fresh, ec);
+        if (!ec)
+          std::filesystem::create_directories(fresh, ec);
+        if (ec)
+          error = "Cannot create '" + fresh + "' for the checkpoint (" + ec.message() +
+                  "); the previous checkpoint is kept.";
       }
-    MPI_Barrier(mpi_communicator);
+    throw_first_error(error, mpi_communicator);
     const bool written =
       Checkpoint::write_rank_file(Checkpoint::rank_file(fresh, rank),
                                   state_header(),
@@ -101,15 +112,29 @@ namespace WheelRail
         info << "wheelrail checkpoint: step " << solver->step_number() << ", t = " << solver->time()
              << " s, " << ranks << " rank(s)\n";
         info.flush();
-        AssertThrow(info.good(), ExcMessage("Cannot write '" + fresh + "/info'."));
+        if (!info.good())
+          error = "Cannot write '" + fresh +
+                  "/info' (disk full or no permission); the previous checkpoint is kept.";
         info.close();
-        std::filesystem::remove_all(old);
-        if (std::filesystem::exists(target))
-          std::filesystem::rename(target, old);
-        std::filesystem::rename(fresh, target);
-        std::filesystem::remove_all(old);
+        if (error.empty())
+          {
+            std::error_code ec;
+            std::filesystem::remove_all(old, ec);
+            if (!ec && std::filesystem::exists(target))
+              std::filesystem::rename(target, old, ec);
+            if (!ec)
+              std::filesystem::rename(fresh, target, ec);
+            if (ec)
+              error = "Cannot put the checkpoint '" + fresh + "' in place of '" + target +
+                      "' (" + ec.message() + ").";
+            else
+              {
+                guard->commit();
+                std::filesystem::remove_all(old, ec);
+              }
+          }
       }
-    MPI_Barrier(mpi_communicator);
+    throw_first_error(error, mpi_communicator);
   }
 
 
