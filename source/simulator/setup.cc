@@ -148,6 +148,16 @@ namespace WheelRail
     else
       solver->set_time_step(solver->stable_time_step());
 
+    // a resumed run reads its checkpoint here, so that a checkpoint refused
+    // for any reason (another rank count, a mesh or state that does not
+    // fit) stops the run before it has written anything
+    const bool explicit_run = parameters.problem.mode == "explicit dynamics";
+    if (parameters.output.resume && explicit_run && !parameters.problem.dry_run)
+      {
+        setup_postprocessors();
+        read_checkpoint();
+      }
+
     // the setup has succeeded: from here on the run owns the directory's
     // files (a rejected run leaves the previous run's parameters.prm)
     access->write_file("parameters.prm", parameter_file);
@@ -157,7 +167,7 @@ namespace WheelRail
         pcout << "Dry run: stopping after the setup." << std::endl;
         return;
       }
-    if (parameters.problem.mode == "explicit dynamics")
+    if (explicit_run)
       run_explicit();
     else if (parameters.problem.mode == "static contact")
       run_static_contact();

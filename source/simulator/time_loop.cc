@@ -118,12 +118,12 @@ namespace WheelRail
   Simulator::run_explicit()
   {
     const bool resume = parameters.output.resume;
-    // the probes first: a probe point outside the mesh stops the run before
-    // the static start; a resumed run takes its state from the checkpoint,
-    // read once the postprocessors are set up
-    setup_postprocessors();
+    // a resumed run has set up the postprocessors and read the checkpoint
+    // in run(), before it wrote anything; otherwise the probes first: a
+    // probe point outside the mesh stops the run before the static start
     if (!resume)
       {
+        setup_postprocessors();
         if (wheelset)
           {
             start_wheelset();
@@ -134,8 +134,6 @@ namespace WheelRail
         else
           apply_initial_conditions();
       }
-    if (resume)
-      read_checkpoint();
     const double        dt = solver->time_step();
     const unsigned long n_steps =
       static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9));
