@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/base/stop_signal.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
@@ -157,6 +158,10 @@ namespace WheelRail
         setup_postprocessors();
         read_checkpoint();
       }
+    StopSignal::stop_if_received(mpi_communicator,
+                                 "during the setup",
+                                 "nothing was written in Problem/Output directory '" +
+                                   output_directory + "'");
 
     // the setup has succeeded: from here on the run owns the directory's
     // files (a rejected run leaves the previous run's parameters.prm)
