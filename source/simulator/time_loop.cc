@@ -217,16 +217,19 @@ namespace WheelRail
   {
     // checkpoint every N steps, every M minutes (rank 0's clock decides),
     // at a requested stop, and after SIGTERM or SIGINT on any rank: one
-    // collective of two ints after every step (none on one rank) tells all
-    // ranks alike the signal and rank 0's minutes
+    // collective of two ints (none on one rank) tells all ranks alike the
+    // signal and rank 0's minutes: after every step with Checkpoint
+    // minutes, else after every StopSignal::check_interval-th step
     const OutputParameters &op = parameters.output;
     const bool stop = op.stop_after_step > 0 && n + 1 == op.stop_after_step && n + 1 < n_steps;
     bool       due  = stop || (op.checkpoint_interval > 0 && (n + 1) % op.checkpoint_interval == 0);
-    int        agreed[2] = {StopSignal::received(), 0};
-    if (op.checkpoint_minutes > 0 && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    const bool minutes   = op.checkpoint_minutes > 0;
+    const bool ask       = minutes || (n + 1) % StopSignal::check_interval == 0;
+    int        agreed[2] = {ask ? StopSignal::received() : 0, 0};
+    if (minutes && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       agreed[1] = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60. >=
                   op.checkpoint_minutes;
-    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+    if (ask && Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
       MPI_Allreduce(MPI_IN_PLACE, agreed, 2, MPI_INT, MPI_MAX, mpi_communicator);
     const int signal = agreed[0];
     due              = due || agreed[1] || signal;
