@@ -80,11 +80,11 @@ namespace WheelRail
     // it for checkpoint/: the previous checkpoint stays until the new one
     // is complete. A failure on the way removes checkpoint.new/ (rank 0's
     // guard) and stops every rank with one message.
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const std::string  fresh  = output_directory + "/checkpoint.new";
-    const std::string  target = output_directory + "/checkpoint";
-    const std::string  old    = output_directory + "/checkpoint.old";
+    const unsigned int             rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int             ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const std::string              fresh  = output_directory + "/checkpoint.new";
+    const std::string              target = output_directory + "/checkpoint";
+    const std::string              old    = output_directory + "/checkpoint.old";
     std::unique_ptr<TemporaryPath> guard;
     std::string                    error;
     if (rank == 0)
@@ -126,8 +126,8 @@ namespace WheelRail
             if (!ec)
               std::filesystem::rename(fresh, target, ec);
             if (ec)
-              error = "Cannot put the checkpoint '" + fresh + "' in place of '" + target +
-                      "' (" + ec.message() + ").";
+              error = "Cannot put the checkpoint '" + fresh + "' in place of '" + target + "' (" +
+                      ec.message() + ").";
             else
               {
                 guard->commit();
@@ -234,8 +234,7 @@ namespace WheelRail
     std::string error = error_of([&]() {
       AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
       const Checkpoint::Header header = Checkpoint::read_header(in, name);
-      AssertThrow(header.ranks == ranks &&
-                    header.cells == triangulation.n_global_active_cells() &&
+      AssertThrow(header.ranks == ranks && header.cells == triangulation.n_global_active_cells() &&
                     header.dofs == solver->get_dof_handler().n_dofs(),
                   ExcMessage("The checkpoint in '" + checkpoint_directory +
                              "' was written by a run with " + std::to_string(header.ranks) +

@@ -180,11 +180,11 @@ namespace WheelRail
     std::unique_ptr<DirectoryLock> lock;
     /** OUTDIR/checkpoint, or checkpoint.old if a run died between the
      *  two renames of write_checkpoint(); set by check_checkpoint(). */
-    std::string        checkpoint_directory;
+    std::string checkpoint_directory;
     /** The resumable entries that differ from the checkpoint's run; set by
      *  check_checkpoint(), listed by read_checkpoint(). */
     std::vector<Checkpoint::Change> resumed_changes;
-    std::ostringstream silent_log;
+    std::ostringstream              silent_log;
     /** What the postprocessors and checks read of the run (after the
      *  setup). */
     std::unique_ptr<SimulatorAccess> access;
