@@ -6,6 +6,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <wheelrail/base/stop_signal.h>
 #include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/simulator/simulator.h>
@@ -90,6 +91,9 @@ main(int argc, char **argv)
   const MPI_Comm                   comm  = MPI_COMM_WORLD;
   const unsigned int               rank  = Utilities::MPI::this_mpi_process(comm);
   const unsigned int               ranks = Utilities::MPI::n_mpi_processes(comm);
+
+  // SIGTERM and SIGINT from here on stop the run cleanly (stop_signal.h)
+  WheelRail::StopSignal::install();
 
   const CommandLine  command_line = read_command_line(argc, argv);
   const std::string &input        = command_line.input;
@@ -177,6 +181,13 @@ main(int argc, char **argv)
         parameters.output.resume = true;
       WheelRail::Simulator simulator(parameters, prm, comm);
       simulator.run();
+    }
+  catch (const WheelRail::StopSignal::Stopped &e)
+    {
+      // every rank stops alike; the status a shell gives a process ended by
+      // the signal
+      fail(e.what());
+      return 128 + e.signal();
     }
   catch (const ExceptionBase &e)
     {

@@ -97,10 +97,22 @@ namespace WheelRail
 
 
 
+  TemporaryPath::~TemporaryPath()
+  {
+    if (!committed)
+      {
+        std::error_code ec;
+        std::filesystem::remove_all(path, ec);
+      }
+  }
+
+
+
   void
   write_file_atomically(const std::string &path, const std::string &content)
   {
-    const std::string tmp = path + ".tmp";
+    TemporaryPath     guard(path + ".tmp");
+    const std::string tmp = guard.name();
     {
       std::ofstream out(tmp);
       out << content;
@@ -111,6 +123,7 @@ namespace WheelRail
     std::error_code ec;
     std::filesystem::rename(tmp, path, ec);
     AssertThrow(!ec, ExcMessage("Cannot rename '" + tmp + "' to '" + path + "': " + ec.message()));
+    guard.commit();
   }
 
 
@@ -155,7 +168,8 @@ namespace WheelRail
       error_of([&]() {
         // straight into the file: a piece can be large
         const std::string path = directory + piece(rank);
-        const std::string tmp  = path + ".tmp";
+        TemporaryPath     guard(path + ".tmp");
+        const std::string tmp = guard.name();
         {
           std::ofstream out(tmp, std::ios::binary);
           AssertThrow(out.good(), ExcMessage("Cannot write '" + tmp + "' (no permission?)."));
@@ -168,6 +182,7 @@ namespace WheelRail
         std::filesystem::rename(tmp, path, ec);
         AssertThrow(!ec,
                     ExcMessage("Cannot rename '" + tmp + "' to '" + path + "': " + ec.message()));
+        guard.commit();
       }),
       comm);
 

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/postprocess/series_hdf5.h>
 
 #include <hdf5.h>
@@ -112,7 +113,8 @@ namespace WheelRail
       return;
 
     const std::string path = access.output_directory + "/series.h5";
-    const std::string temp = path + ".tmp";
+    TemporaryPath     guard(path + ".tmp");
+    const std::string temp = guard.name();
     const hid_t       file = H5Fcreate(temp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     check(file, "create the file", temp);
 
@@ -164,5 +166,6 @@ namespace WheelRail
     check(H5Fclose(file), "close the file", temp);
     AssertThrow(std::rename(temp.c_str(), path.c_str()) == 0,
                 ExcMessage("Could not rename " + temp + " to " + path + "."));
+    guard.commit();
   }
 } // namespace WheelRail

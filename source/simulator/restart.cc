@@ -8,13 +8,16 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/base/checkpoint.h>
+#include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 
 namespace WheelRail
@@ -75,18 +78,27 @@ namespace WheelRail
   {
     // every rank writes its part into checkpoint.new/, then rank 0 swaps
     // it for checkpoint/: the previous checkpoint stays until the new one
-    // is complete
-    const unsigned int rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
-    const unsigned int ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const std::string  fresh  = output_directory + "/checkpoint.new";
-    const std::string  target = output_directory + "/checkpoint";
-    const std::string  old    = output_directory + "/checkpoint.old";
+    // is complete. A failure on the way removes checkpoint.new/ (rank 0's
+    // guard) and stops every rank with one message.
+    const unsigned int             rank   = Utilities::MPI::this_mpi_process(mpi_communicator);
+    const unsigned int             ranks  = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const std::string              fresh  = output_directory + "/checkpoint.new";
+    const std::string              target = output_directory + "/checkpoint";
+    const std::string              old    = output_directory + "/checkpoint.old";
+    std::unique_ptr<TemporaryPath> guard;
+    std::string                    error;
     if (rank == 0)
       {
-        std::filesystem::remove_all(fresh);
-        std::filesystem::create_directories(fresh);
+        guard = std::make_unique<TemporaryPath>(fresh);
+        std::error_code ec;
+        std::filesystem::remove_all(fresh, ec);
+        if (!ec)
+          std::filesystem::create_directories(fresh, ec);
+        if (ec)
+          error = "Cannot create '" + fresh + "' for the checkpoint (" + ec.message() +
+                  "); the previous checkpoint is kept.";
       }
-    MPI_Barrier(mpi_communicator);
+    throw_first_error(error, mpi_communicator);
     const bool written =
       Checkpoint::write_rank_file(Checkpoint::rank_file(fresh, rank),
                                   state_header(),
@@ -101,15 +113,29 @@ namespace WheelRail
         info << "wheelrail checkpoint: step " << solver->step_number() << ", t = " << solver->time()
              << " s, " << ranks << " rank(s)\n";
         info.flush();
-        AssertThrow(info.good(), ExcMessage("Cannot write '" + fresh + "/info'."));
+        if (!info.good())
+          error = "Cannot write '" + fresh +
+                  "/info' (disk full or no permission); the previous checkpoint is kept.";
         info.close();
-        std::filesystem::remove_all(old);
-        if (std::filesystem::exists(target))
-          std::filesystem::rename(target, old);
-        std::filesystem::rename(fresh, target);
-        std::filesystem::remove_all(old);
+        if (error.empty())
+          {
+            std::error_code ec;
+            std::filesystem::remove_all(old, ec);
+            if (!ec && std::filesystem::exists(target))
+              std::filesystem::rename(target, old, ec);
+            if (!ec)
+              std::filesystem::rename(fresh, target, ec);
+            if (ec)
+              error = "Cannot put the checkpoint '" + fresh + "' in place of '" + target + "' (" +
+                      ec.message() + ").";
+            else
+              {
+                guard->commit();
+                std::filesystem::remove_all(old, ec);
+              }
+          }
       }
-    MPI_Barrier(mpi_communicator);
+    throw_first_error(error, mpi_communicator);
   }
 
 
@@ -167,12 +193,8 @@ namespace WheelRail
                   checkpoint_directory + "' is at step " + std::to_string(header.step) +
                   " (t = " + fmt(header.time) + " s): nothing to resume. Set a later End time."));
 
-    if (!allowed.empty())
-      {
-        pcout << "Resumed with changed entries:" << std::endl;
-        for (const auto &c : allowed)
-          pcout << "  " << c.entry << ": " << c.old_value << " -> " << c.new_value << std::endl;
-      }
+    // listed once the state is read (read_checkpoint())
+    resumed_changes = allowed;
   }
 
 
@@ -182,28 +204,74 @@ namespace WheelRail
   {
     const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    // what failed on this rank, as text, so that every rank stops alike
+    const auto error_of = [](const std::function<void()> &action) -> std::string {
+      try
+        {
+          action();
+        }
+      catch (const ExceptionBase &e)
+        {
+          std::ostringstream info;
+          e.print_info(info);
+          return info.str();
+        }
+      catch (const std::exception &e)
+        {
+          return e.what();
+        }
+      return "";
+    };
     // check_checkpoint() has verified the files and set the directory
-    const std::string name = Checkpoint::rank_file(checkpoint_directory, rank);
-    std::ifstream     file(name, std::ios::binary);
-    AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
-    Checkpoint::Reader       in(file, name);
-    const Checkpoint::Header header = Checkpoint::read_header(in, name);
-    AssertThrow(header.ranks == ranks && header.cells == triangulation.n_global_active_cells() &&
-                  header.dofs == solver->get_dof_handler().n_dofs(),
-                ExcMessage("The checkpoint in '" + checkpoint_directory +
-                           "' was written by a run with " + std::to_string(header.ranks) +
-                           " rank(s), " + std::to_string(header.cells) + " cells and " +
-                           std::to_string(header.dofs) + " DoFs; this run has " +
-                           std::to_string(ranks) + ", " +
-                           std::to_string(triangulation.n_global_active_cells()) + " and " +
-                           std::to_string(solver->get_dof_handler().n_dofs()) +
-                           ": resume with the same parameters, rank count and executable."));
-    serialize(in);
-    std::uint64_t magic = 0;
-    in.pod(magic);
-    AssertThrow(magic == Checkpoint::magic,
-                ExcMessage("The checkpoint '" + name + "' is corrupt."));
+    const std::string  name = Checkpoint::rank_file(checkpoint_directory, rank);
+    std::ifstream      file(name, std::ios::binary);
+    Checkpoint::Reader in(file, name);
+    // every rank's file must fit before any rank reads its state (which
+    // exchanges ghost values): the header, and the first record of the
+    // state, the owned part of the displacement (ExplicitSolver::serialize()),
+    // whose size a rank file of another rank shows unless the parts are
+    // equal
+    std::string error = error_of([&]() {
+      AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
+      const Checkpoint::Header header = Checkpoint::read_header(in, name);
+      AssertThrow(header.ranks == ranks && header.cells == triangulation.n_global_active_cells() &&
+                    header.dofs == solver->get_dof_handler().n_dofs(),
+                  ExcMessage("The checkpoint in '" + checkpoint_directory +
+                             "' was written by a run with " + std::to_string(header.ranks) +
+                             " rank(s), " + std::to_string(header.cells) + " cells and " +
+                             std::to_string(header.dofs) + " DoFs; this run has " +
+                             std::to_string(ranks) + ", " +
+                             std::to_string(triangulation.n_global_active_cells()) + " and " +
+                             std::to_string(solver->get_dof_handler().n_dofs()) +
+                             ": resume with the same parameters, rank count and executable."));
+      const std::streampos start = file.tellg();
+      std::uint64_t        owned = 0;
+      in.pod(owned);
+      file.seekg(start);
+      const std::uint64_t mine = solver->partitioner()->locally_owned_size();
+      AssertThrow(owned == mine,
+                  ExcMessage("--resume: the checkpoint file '" + name + "' holds " +
+                             std::to_string(owned) + " displacement entries, and rank " +
+                             std::to_string(rank) + " owns " + std::to_string(mine) +
+                             " in this run: the rank files were renamed or exchanged, or "
+                             "come from another executable."));
+    });
+    throw_first_error(error, mpi_communicator);
+    error = error_of([&]() {
+      serialize(in);
+      std::uint64_t magic = 0;
+      in.pod(magic);
+      AssertThrow(magic == Checkpoint::magic,
+                  ExcMessage("The checkpoint '" + name + "' is corrupt."));
+    });
+    throw_first_error(error, mpi_communicator);
     pcout << "Resumed from " << checkpoint_directory << " at step " << solver->step_number()
           << ", t = " << fmt(solver->time() * 1e3) << " ms" << std::endl;
+    if (!resumed_changes.empty())
+      {
+        pcout << "Resumed with changed entries:" << std::endl;
+        for (const auto &c : resumed_changes)
+          pcout << "  " << c.entry << ": " << c.old_value << " -> " << c.new_value << std::endl;
+      }
   }
 } // namespace WheelRail

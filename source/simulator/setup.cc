@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/base/stop_signal.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
@@ -190,6 +191,20 @@ namespace WheelRail
     if (parameters.problem.mode == "explicit dynamics")
       check_run_length();
 
+    // a resumed run reads its checkpoint here, so that a checkpoint refused
+    // for any reason (another rank count, a mesh or state that does not
+    // fit) stops the run before it has written anything
+    const bool explicit_run = parameters.problem.mode == "explicit dynamics";
+    if (parameters.output.resume && explicit_run && !parameters.problem.dry_run)
+      {
+        setup_postprocessors();
+        read_checkpoint();
+      }
+    StopSignal::stop_if_received(mpi_communicator,
+                                 "during the setup",
+                                 "nothing was written in Problem/Output directory '" +
+                                   output_directory + "'");
+
     // the setup has succeeded: from here on the run owns the directory's
     // files (a rejected run leaves the previous run's parameters.prm)
     access->write_file("parameters.prm", parameter_file);
@@ -199,7 +214,7 @@ namespace WheelRail
         pcout << "Dry run: stopping after the setup." << std::endl;
         return;
       }
-    if (parameters.problem.mode == "explicit dynamics")
+    if (explicit_run)
       run_explicit();
     else if (parameters.problem.mode == "static contact")
       run_static_contact();

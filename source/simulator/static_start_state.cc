@@ -158,8 +158,11 @@ namespace WheelRail
       directory + ".new." +
       std::to_string(Utilities::MPI::broadcast(mpi_communicator, static_cast<int>(getpid()), 0));
     std::string error;
+    // removes the directory if a failure throws before the end
+    std::unique_ptr<TemporaryPath> guard;
     if (rank == 0)
       {
+        guard = std::make_unique<TemporaryPath>(fresh);
         std::error_code ec;
         std::filesystem::remove_all(fresh, ec);
         std::filesystem::create_directories(fresh, ec);

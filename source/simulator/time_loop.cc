@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/base/stop_signal.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/patch_series.h>
 #include <wheelrail/postprocess/series_hdf5.h>
@@ -118,12 +119,12 @@ namespace WheelRail
   Simulator::run_explicit()
   {
     const bool resume = parameters.output.resume;
-    // the probes first: a probe point outside the mesh stops the run before
-    // the static start; a resumed run takes its state from the checkpoint,
-    // read once the postprocessors are set up
-    setup_postprocessors();
+    // a resumed run has set up the postprocessors and read the checkpoint
+    // in run(), before it wrote anything; otherwise the probes first: a
+    // probe point outside the mesh stops the run before the static start
     if (!resume)
       {
+        setup_postprocessors();
         if (wheelset)
           {
             start_wheelset();
@@ -134,8 +135,13 @@ namespace WheelRail
         else
           apply_initial_conditions();
       }
-    if (resume)
-      read_checkpoint();
+    // a signal during the static start or the initial conditions stops
+    // the run before its first step
+    StopSignal::stop_if_received(mpi_communicator,
+                                 "before the time loop",
+                                 resume ? "the checkpoint in " + checkpoint_directory +
+                                            " is unchanged; resume again with --resume" :
+                                          "no checkpoint was written; run the case again");
     const double        dt = solver->time_step();
     const unsigned long n_steps =
       static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9));
@@ -210,17 +216,23 @@ namespace WheelRail
   Simulator::checkpoint_if_due(const unsigned long n, const unsigned long n_steps)
   {
     // checkpoint every N steps, every M minutes (rank 0's clock decides),
-    // and at a requested stop
+    // at a requested stop, and after SIGTERM or SIGINT on any rank: one
+    // collective of two ints (none on one rank) tells all ranks alike the
+    // signal and rank 0's minutes: after every step with Checkpoint
+    // minutes, else after every StopSignal::check_interval-th step
     const OutputParameters &op = parameters.output;
     const bool stop = op.stop_after_step > 0 && n + 1 == op.stop_after_step && n + 1 < n_steps;
     bool       due  = stop || (op.checkpoint_interval > 0 && (n + 1) % op.checkpoint_interval == 0);
-    if (op.checkpoint_minutes > 0)
-      {
-        const double minutes =
-          std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60.;
-        due =
-          due || Utilities::MPI::broadcast(mpi_communicator, minutes >= op.checkpoint_minutes, 0);
-      }
+    const bool minutes   = op.checkpoint_minutes > 0;
+    const bool ask       = minutes || (n + 1) % StopSignal::check_interval == 0;
+    int        agreed[2] = {ask ? StopSignal::received() : 0, 0};
+    if (minutes && Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+      agreed[1] = std::chrono::duration<double>(Clock::now() - last_checkpoint).count() / 60. >=
+                  op.checkpoint_minutes;
+    if (ask && Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      MPI_Allreduce(MPI_IN_PLACE, agreed, 2, MPI_INT, MPI_MAX, mpi_communicator);
+    const int signal = agreed[0];
+    due              = due || agreed[1] || signal;
     if (due && n + 1 < n_steps)
       {
         for (const auto &postprocessor : postprocessors)
@@ -234,6 +246,13 @@ namespace WheelRail
             << " (Output/Stop after step) at t = " << fmt(solver->time() * 1e3)
             << " ms; checkpoint in " << output_directory
             << "/checkpoint; continue with: wheelrail CASE.prm --resume" << std::endl;
+    // a signal in the last step lets the run finish
+    else if (signal && n + 1 < n_steps)
+      throw StopSignal::Stopped(signal,
+                                "stopped by " + StopSignal::name(signal) + " at step " +
+                                  std::to_string(n + 1) + ", t = " + fmt(solver->time() * 1e3) +
+                                  " ms; checkpoint written in " + output_directory +
+                                  "/checkpoint, resume with: wheelrail CASE.prm --resume");
     return stop;
   }
 

@@ -12,6 +12,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <wheelrail/base/stop_signal.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/static_solver.h>
 
@@ -290,6 +291,10 @@ namespace WheelRail
     VectorType trial(u);
     for (unsigned int it = 0; it <= parameters.statics.max_newton_iterations; ++it)
       {
+        // SIGTERM or SIGINT: the ranks agree here, where all of them are
+        StopSignal::stop_if_received(mpi_communicator,
+                                     "during the static solve",
+                                     "nothing of it was written; run the case again");
         force = contact.summary().force[2];
         log << "    Newton " << std::setw(2) << it << ": residual " << std::setprecision(3)
             << std::scientific << norm / load_scale << std::defaultfloat << std::setprecision(6)

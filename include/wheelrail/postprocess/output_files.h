@@ -12,6 +12,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <string>
+#include <utility>
 
 namespace WheelRail
 {
@@ -56,6 +57,42 @@ namespace WheelRail
    *  the message of the lowest such rank (one message, all ranks stop). */
   void
   throw_first_error(const std::string &error, const MPI_Comm comm);
+
+  /**
+   * A file or directory written under a temporary name (FILE.tmp,
+   * checkpoint.new): removed when the guard goes out of scope, unless
+   * commit() said that it has been renamed into place. A failure that
+   * throws on the way therefore leaves no temporary behind.
+   */
+  class TemporaryPath
+  {
+  public:
+    explicit TemporaryPath(std::string path)
+      : path(std::move(path))
+    {}
+    ~TemporaryPath();
+
+    TemporaryPath(const TemporaryPath &) = delete;
+    TemporaryPath &
+    operator=(const TemporaryPath &) = delete;
+
+    const std::string &
+    name() const
+    {
+      return path;
+    }
+
+    /** The temporary has been renamed (or is no longer ours to remove). */
+    void
+    commit()
+    {
+      committed = true;
+    }
+
+  private:
+    std::string path;
+    bool        committed = false;
+  };
 
   /** Write @p content to @p path through @p path.tmp and a rename. */
   void

@@ -155,7 +155,8 @@ namespace WheelRail
      *  the run that wrote it (those that do are listed). */
     void
     check_checkpoint();
-    /** Read the state back (wheelrail CASE.prm --resume). */
+    /** Read the state back (wheelrail CASE.prm --resume): in run(), after
+     *  the setup and before anything is written. */
     void
     read_checkpoint();
     /** The header of this rank's file of the run state now: rank count,
@@ -184,8 +185,11 @@ namespace WheelRail
     std::unique_ptr<DirectoryLock> lock;
     /** OUTDIR/checkpoint, or checkpoint.old if a run died between the
      *  two renames of write_checkpoint(); set by check_checkpoint(). */
-    std::string        checkpoint_directory;
-    std::ostringstream silent_log;
+    std::string checkpoint_directory;
+    /** The resumable entries that differ from the checkpoint's run; set by
+     *  check_checkpoint(), listed by read_checkpoint(). */
+    std::vector<Checkpoint::Change> resumed_changes;
+    std::ostringstream              silent_log;
     /** What the postprocessors and checks read of the run (after the
      *  setup). */
     std::unique_ptr<SimulatorAccess> access;
