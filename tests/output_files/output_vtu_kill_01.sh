@@ -19,6 +19,8 @@ fail() {
 } > vtu.prm
 rm -rf run
 mkdir run
+# an output directory of wheelrail's (it refuses one that holds other files)
+touch run/.wheelrail.lock
 # snapshot 2 (after 100 steps), piece of rank 0, under its temporary name
 pipe=run/solution_00002.0.vtu.tmp
 mkfifo "$pipe"

@@ -36,10 +36,10 @@ trap 'umount full' EXIT
 
 cp "$src/tests/restart/restart_02.prm" base.prm
 sed -i 's#Output directory = run#Output directory = full/run#' base.prm
-{ cat base.prm; printf 'subsection Output\n  set Checkpoint interval = 50\nend\n'; } > every50.prm
+{ echo 'include base.prm'; printf 'subsection Output\n  set Checkpoint interval = 50\nend\n'; } > every50.prm
 rm -rf run whole saved
 # the uninterrupted run, and the run stopped after step 100 (off the tmpfs)
-{ cat base.prm; printf 'subsection Problem\n  set Output directory = whole\nend\nsubsection Output\n  set Stop after step = 0\nend\n'; } > whole.prm
+{ echo 'include base.prm'; printf 'subsection Problem\n  set Output directory = whole\nend\nsubsection Output\n  set Stop after step = 0\nend\n'; } > whole.prm
 run whole.prm > whole.log
 sed 's#full/run#run#' base.prm > local.prm
 run local.prm > split.log

@@ -43,7 +43,7 @@ refused() {
 }
 
 cp "$src/tests/restart/restart_02.prm" base.prm
-{ cat base.prm
+{ echo 'include base.prm'
   printf "subsection Material\n  set Young's modulus = 2.0e11\nend\n"
   printf "subsection Output\n  set Statistics interval = 20\nend\n"
 } > physics.prm
