@@ -73,6 +73,7 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import atomic_file  # scripts/atomic_file.py
 
 # (column, unit, description) of the table, in order
 COLUMNS = [
@@ -210,13 +211,12 @@ def write_csv(path, meta, rows):
     lines += ["# %s = %s" % kv for kv in meta.items()]
     lines.append(",".join(c[0] for c in COLUMNS))
     lines += [",".join("%.6g" % r[c[0]] for c in COLUMNS) for r in rows]
-    with open(path + ".tmp", "w") as f:
+    with atomic_file.replacing(path) as tmp, open(tmp, "w") as f:
         f.write("\n".join(lines) + "\n")
-    os.replace(path + ".tmp", path)
 
 
 def write_h5(path, meta, rows, curve):
-    with h5py.File(path + ".tmp", "w") as f:
+    with atomic_file.replacing(path) as tmp, h5py.File(tmp, "w") as f:
         for k, v in meta.items():
             f.attrs[k] = v
         g = f.create_group("creep_table")
@@ -228,7 +228,6 @@ def write_h5(path, meta, rows, curve):
                                   "law at the mean normal force")
         for k, name in enumerate(("creepage", "Fx_over_Fn", "slip_area_fraction")):
             h.create_dataset(name, data=np.array([c[k] for c in curve]))
-    os.replace(path + ".tmp", path)
 
 
 def plot_table(rep, rows, curve, grid, title):

@@ -33,6 +33,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import numpy as np  # noqa: E402
 
 import halfspace_bem as bem  # noqa: E402
+import atomic_file  # scripts/atomic_file.py
 
 SPEC = dict(load=140.3e3, rx=0.46, ry=0.30, E=2.1e11, nu=0.3, speed=38.89,
             f=0.5, f_s=0.5, f_d=0.32, k=6.0)
@@ -110,12 +111,10 @@ def fields(grid, p, sol, speed):
 
 
 def write_csv(path, header, rows):
-    tmp = path + ".tmp"
-    with open(tmp, "w") as out:
+    with atomic_file.replacing(path) as tmp, open(tmp, "w") as out:
         out.write(",".join(header) + "\n")
         for r in rows:
             out.write(",".join(v if isinstance(v, str) else "%.9g" % v for v in r) + "\n")
-    os.replace(tmp, path)
 
 
 def run(args):

@@ -56,6 +56,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import hs_compare as hc  # noqa: E402
 import report_page  # noqa: E402  (scripts/report_page.py: the report page)
 from hs_compare import axis_rows, column, read_parameters, read_patch, read_statistics  # noqa: E402
+import atomic_file  # scripts/atomic_file.py
 
 INSTANTS = ["t-5.7us", "t", "t+5.7us"]
 
@@ -102,17 +103,15 @@ class Report:
     def save(self, fig, name, caption):
         fig.tight_layout()
         path = os.path.join(self.out, name)
-        tmp = path + ".tmp.png"
-        fig.savefig(tmp, dpi=110)
-        os.replace(tmp, path)
+        with atomic_file.replacing(path, ".tmp.png") as tmp:
+            fig.savefig(tmp, dpi=110)
         self.figures.append((name, caption, fig))
 
     def write_page(self, title, header):
         """report.html: @p header (HTML lines), then every figure, embedded, with its caption."""
         path = os.path.join(self.out, "report.html")
-        with open(path + ".tmp", "w") as f:
+        with atomic_file.replacing(path) as tmp, open(tmp, "w") as f:
             f.write(report_page.page(title, header, self.figure_files()))
-        os.replace(path + ".tmp", path)
         return path
 
     def figure_files(self):

@@ -20,6 +20,7 @@ import time
 import numpy as np
 
 import hs_compare as hc  # scripts/hs_compare.py: the ellipse fit
+import atomic_file  # scripts/atomic_file.py
 
 STYLE = """
 body { font-family: sans-serif; max-width: 1100px; margin: 1.5em auto; color: #222; line-height: 1.4; }
@@ -274,9 +275,8 @@ def run_report(path, run, other, prm, names, stats, patch, comparison, hs_lines,
                     end.append(["%s [%s]" % (label, unit), "<td class='num'>%.6g</td>" % (last[i] * scale)])
                     break
         body += table(end)
-    with open(path + ".tmp", "w") as f:
+    with atomic_file.replacing(path) as tmp, open(tmp, "w") as f:
         f.write(page("wheelrail report: " + name, body, figures))
-    os.replace(path + ".tmp", path)
 
 
 def _timing(run):

@@ -54,6 +54,7 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import atomic_file  # scripts/atomic_file.py
 
 LAWS = {
     "constant": {"Friction law": "constant", "Static friction coefficient": "0.5"},
@@ -147,9 +148,8 @@ def write_creep_csv(path, fe, curves):
     lines += ["FE,%s,%g,%.6g,%.6g,%.6g,%.6g" % p for p in fe]
     lines += ["half-space,%s,,%.6g,%.6g,%.6g,%.6g" % (law, xi, ratio, ratio, slip)
               for law, curve in curves.items() for xi, ratio, slip in curve]
-    with open(path + ".tmp", "w") as f:
+    with atomic_file.replacing(path) as tmp, open(tmp, "w") as f:
         f.write("\n".join(lines) + "\n")
-    os.replace(path + ".tmp", path)
 
 
 def plot_creep(rep, fe, curves, grid):
@@ -227,11 +227,10 @@ def main():
         mu_a, fn, mu_end = summarise(run)
         rows.append((law, mu, mu_a, fn, mu_end))
     csv = os.path.join(args.out, "sweep.csv")
-    with open(csv + ".tmp", "w") as f:
+    with atomic_file.replacing(csv) as tmp, open(tmp, "w") as f:
         f.write("law,mu_n,mean_mu_a_second_half,mean_F_N_second_half_N,mu_a_end\n")
         for r in rows:
             f.write("%s,%g,%.6g,%.6g,%.6g\n" % r)
-    os.replace(csv + ".tmp", csv)
 
     rep = plot.Report(args.out)
     fig, ax = plt.subplots(figsize=(6.5, 4.8))
