@@ -18,7 +18,8 @@ main()
   for (const ExpectedError &q : expected_errors())
     {
       std::printf("%s (target %.3f): %s\n", q.key.c_str(), q.target, q.what.c_str());
-      for (const double h : {0.2e-3, 0.33e-3, 0.5e-3, 0.66e-3, 1.0e-3, 1.32e-3, 1.5e-3, 2.64e-3, 3e-3})
+      for (const double h :
+           {0.2e-3, 0.33e-3, 0.5e-3, 0.66e-3, 1.0e-3, 1.32e-3, 1.5e-3, 2.64e-3, 3e-3})
         {
           const Expectation e = expectation(q, h);
           std::printf("  h %.2f mm: expected %.4f, limit %.4f, in study %d\n",

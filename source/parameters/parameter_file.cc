@@ -445,7 +445,15 @@ namespace WheelRail
         {
           std::ostringstream info;
           e.print_info(info);
-          AssertThrow(false, ExcMessage(file.locate(info.str())));
+          std::string message = file.locate(info.str());
+          // deal.II 9.4's message on an unknown subsection leaves out the
+          // '>' that closes the file name
+          const std::string unknown = ": There is no such subsection";
+          const auto        at      = message.find(unknown);
+          const auto        open    = message.rfind("of file <", at);
+          if (at != std::string::npos && open != std::string::npos && message.find('>', open) > at)
+            message.insert(at, ">");
+          AssertThrow(false, ExcMessage(message));
         }
     }
   } // namespace ParameterFile

@@ -82,6 +82,28 @@ namespace WheelRail
 
 
 
+  std::string
+  error_message_of(const std::function<void()> &action)
+  {
+    try
+      {
+        action();
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        return info.str();
+      }
+    catch (const std::exception &e)
+      {
+        return e.what();
+      }
+    return "";
+  }
+
+
+
   void
   throw_first_error(const std::string &error, const MPI_Comm comm)
   {
@@ -145,27 +167,9 @@ namespace WheelRail
       return stem + "." + Utilities::int_to_string(r, rank_digits) + ".vtu";
     };
 
-    // what failed on this rank, as text, so that every rank learns of it
-    const auto error_of = [](const std::function<void()> &action) -> std::string {
-      try
-        {
-          action();
-        }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          return info.str();
-        }
-      catch (const std::exception &e)
-        {
-          return e.what();
-        }
-      return "";
-    };
 
     throw_first_error(
-      error_of([&]() {
+      error_message_of([&]() {
         // straight into the file: a piece can be large
         const std::string path = directory + piece(rank);
         TemporaryPath     guard(path + ".tmp");
@@ -187,7 +191,7 @@ namespace WheelRail
       comm);
 
     // every piece is in place: the record that lists them
-    throw_first_error(error_of([&]() {
+    throw_first_error(error_message_of([&]() {
                         if (rank != 0)
                           return;
                         std::vector<std::string> pieces;

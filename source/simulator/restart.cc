@@ -204,24 +204,6 @@ namespace WheelRail
   {
     const unsigned int rank  = Utilities::MPI::this_mpi_process(mpi_communicator);
     const unsigned int ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
-    // what failed on this rank, as text, so that every rank stops alike
-    const auto error_of = [](const std::function<void()> &action) -> std::string {
-      try
-        {
-          action();
-        }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream info;
-          e.print_info(info);
-          return info.str();
-        }
-      catch (const std::exception &e)
-        {
-          return e.what();
-        }
-      return "";
-    };
     // check_checkpoint() has verified the files and set the directory
     const std::string  name = Checkpoint::rank_file(checkpoint_directory, rank);
     std::ifstream      file(name, std::ios::binary);
@@ -231,7 +213,7 @@ namespace WheelRail
     // state, the owned part of the displacement (ExplicitSolver::serialize()),
     // whose size a rank file of another rank shows unless the parts are
     // equal
-    std::string error = error_of([&]() {
+    std::string error = error_message_of([&]() {
       AssertThrow(file.good(), ExcMessage("--resume: cannot open '" + name + "'."));
       const Checkpoint::Header header = Checkpoint::read_header(in, name);
       AssertThrow(header.ranks == ranks && header.cells == triangulation.n_global_active_cells() &&
@@ -257,7 +239,7 @@ namespace WheelRail
                              "come from another executable."));
     });
     throw_first_error(error, mpi_communicator);
-    error = error_of([&]() {
+    error = error_message_of([&]() {
       serialize(in);
       std::uint64_t magic = 0;
       in.pod(magic);

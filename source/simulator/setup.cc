@@ -94,7 +94,7 @@ namespace WheelRail
     std::string message;
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       {
-        std::error_code ec;
+        std::error_code   ec;
         const std::string foreign = foreign_entry(output_directory);
         if (!foreign.empty())
           {

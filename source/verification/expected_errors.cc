@@ -28,16 +28,30 @@ namespace WheelRail
       // creepage held at -2.93e-3, paper step, half-space on 96 x 65
       // elements; runs of 2026-11-25 (h 1.32, 0.66, 0.33 mm)
       static const std::vector<ExpectedError> table = {
-        {"p0", "peak pressure p0 of the fitted ellipse against Hertz, relative", 0.02,
+        {"p0",
+         "peak pressure p0 of the fitted ellipse against Hertz, relative",
+         0.02,
          {{0.0362, 0.0202, 0.0109}}},
-        {"a", "semi-axis a (rolling direction) against Hertz, relative", 0.02,
+        {"a",
+         "semi-axis a (rolling direction) against Hertz, relative",
+         0.02,
          {{0.0016, 0.0012, 0.0005}}},
         {"b", "semi-axis b (lateral) against Hertz, relative", 0.02, {{0.0000, 0.0050, 0.0048}}},
-        {"creep", "rigid creepage against the half-space creepage at the same F_x, relative", 0.05,
+        {"creep",
+         "rigid creepage against the half-space creepage at the same F_x, relative",
+         0.05,
          {{0.0096, 0.0131, 0.0135}}},
-        {"slip", "slip-area fraction (eq. 5) minus the half-space's", 0.03, {{0.041, 0.005, 0.005}}},
-        {"rms_p", "RMS difference of the pressure along y = 0, of p0", 0.05, {{0.027, 0.018, 0.013}}},
-        {"rms_q", "RMS difference of the shear q_x along y = 0, of f p0", 0.05,
+        {"slip",
+         "slip-area fraction (eq. 5) minus the half-space's",
+         0.03,
+         {{0.041, 0.005, 0.005}}},
+        {"rms_p",
+         "RMS difference of the pressure along y = 0, of p0",
+         0.05,
+         {{0.027, 0.018, 0.013}}},
+        {"rms_q",
+         "RMS difference of the shear q_x along y = 0, of f p0",
+         0.05,
          {{0.022, 0.016, 0.012}}}};
       return table;
     }
@@ -59,8 +73,8 @@ namespace WheelRail
     Expectation
     expectation(const ExpectedError &quantity, const double h)
     {
-      const auto  &m = quantity.measured;
-      Expectation  e;
+      const auto &m = quantity.measured;
+      Expectation e;
       e.paper_mesh = m[2];
       e.in_study   = h <= 2 * study_h[0];
       if (h <= study_h[2])
@@ -101,14 +115,14 @@ namespace WheelRail
     std::string
     expectation_verdict(const std::string &key, const double error, const double h)
     {
-      const Expectation e  = expectation(expected_error(key), h);
-      const bool        ok = std::abs(error) <= e.limit;
+      const Expectation  e  = expectation(expected_error(key), h);
+      const bool         ok = std::abs(error) <= e.limit;
       std::ostringstream out;
       out << std::fixed;
       out.precision(3);
       if (!e.in_study)
-        out << (ok ? "within" : "OUTSIDE") << " the target " << e.limit << " (h = "
-            << fmt(h * 1e3, 3) << " mm is coarser than the convergence study's meshes)";
+        out << (ok ? "within" : "OUTSIDE") << " the target " << e.limit
+            << " (h = " << fmt(h * 1e3, 3) << " mm is coarser than the convergence study's meshes)";
       else
         out << (ok ? "as expected" : "OUTSIDE the expectation") << " for h = " << fmt(h * 1e3, 3)
             << " mm (limit " << e.limit << "; paper mesh " << e.paper_mesh << ")";

@@ -5,8 +5,8 @@
  */
 
 #include <wheelrail/simulator/format.h>
-#include <wheelrail/verification/hertz.h>
 #include <wheelrail/verification/expected_errors.h>
+#include <wheelrail/verification/hertz.h>
 #include <wheelrail/verification/hertz_patch.h>
 
 #include <cmath>
@@ -109,15 +109,15 @@ namespace WheelRail
                             const double       scale,
                             const std::string &unit) {
         const double       err = std::abs(fe - ref) / ref;
-        const double       limit =
-          h > 0 ? expectation(expected_error(key), h).limit : tolerance;
+        const double       limit = h > 0 ? expectation(expected_error(key), h).limit : tolerance;
         std::ostringstream error;
         error << std::fixed << std::setprecision(3) << err;
         access.pcout << "  " << std::left << std::setw(34) << what << std::right << std::setw(10)
                      << fmt(fe * scale, 4) << " " << std::setw(10) << fmt(ref * scale, 4) << " "
                      << unit << "   error " << error.str() << "  "
-                     << (h > 0 ? expectation_verdict(key, err, h) :
-                                 err <= tolerance ? "ok" : "OUT OF TOLERANCE")
+                     << (h > 0            ? expectation_verdict(key, err, h) :
+                                   err <= tolerance ? "ok" :
+                                                      "OUT OF TOLERANCE")
                      << std::endl;
         ok = ok && err <= limit;
       };
@@ -133,9 +133,9 @@ namespace WheelRail
         }
       else
         access.pcout << "  no ellipse p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2) fits the " << fit.n_fitted
-                     << " nodes with p >= p_max/4 (Hertz: a " << fmt(h_ref.a * 1e3, 4)
-                     << " mm, b " << fmt(h_ref.b * 1e3, 4) << " mm, p0 "
-                     << fmt(h_ref.p0 * 1e-6, 4) << " MPa)" << std::endl;
+                     << " nodes with p >= p_max/4 (Hertz: a " << fmt(h_ref.a * 1e3, 4) << " mm, b "
+                     << fmt(h_ref.b * 1e3, 4) << " mm, p0 " << fmt(h_ref.p0 * 1e-6, 4) << " MPa)"
+                     << std::endl;
       if (h > 0)
         access.pcout << "  within what the convergence study expects at h = " << fmt(h * 1e3, 3)
                      << " mm (doc/convergence.md): " << (ok ? "yes" : "no") << std::endl;

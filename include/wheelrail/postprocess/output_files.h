@@ -11,6 +11,7 @@
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/mpi.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -52,6 +53,12 @@ namespace WheelRail
     int         fd = -1;
     std::string why_unlocked;
   };
+
+  /** What @p action threw (the message of a deal.II exception or a
+   *  std::exception), or "" if it returned: an error on one rank as text
+   *  that throw_first_error() hands to every rank. */
+  std::string
+  error_message_of(const std::function<void()> &action);
 
   /** Collective: if @p error is non-empty on any rank, throw on every rank
    *  the message of the lowest such rank (one message, all ranks stop). */
