@@ -95,7 +95,12 @@ namespace WheelRail
     AssertThrow(components.size() == 3,
                 ExcMessage(entry + " = '" + expression +
                            "' must have three expressions separated by ';'."));
-    auto function = std::make_unique<FunctionParser<3>>(3);
+    auto              function = std::make_unique<FunctionParser<3>>(3);
+    const std::string known    = "(variables " + variables + "; constants pi" +
+                              (constants_text.empty() ? std::string() : ", " + constants_text) +
+                              ")";
+    // deal.II's parser reads the expressions at their first evaluation
+    Vector<double> at_origin(3);
     try
       {
         function->initialize(variables,
@@ -103,16 +108,24 @@ namespace WheelRail
                              constants,
                              variables.find('t') != std::string::npos);
         for (unsigned int d = 0; d < 3; ++d)
-          AssertThrow(std::isfinite(function->value(Point<3>(), d)), ExcMessage("not finite at 0"));
+          at_origin[d] = function->value(Point<3>(), d);
       }
     catch (const ExceptionBase &e)
       {
         AssertThrow(false,
-                    ExcMessage(entry + " = '" + expression + "' cannot be evaluated (variables " +
-                               variables + "; constants pi and " +
-                               (constants_text.empty() ? std::string("none") : constants_text) +
-                               ")."));
+                    ExcMessage(entry + " = '" + expression + "' cannot be evaluated " + known +
+                               "."));
       }
+    for (unsigned int d = 0; d < 3; ++d)
+      AssertThrow(std::isfinite(at_origin[d]),
+                  ExcMessage(entry + " = '" + expression + "' is not finite at the origin" +
+                             (variables.find('t') != std::string::npos ? " at t = 0" : "") +
+                             " (component " + std::to_string(d + 1) + ": " +
+                             (std::isnan(at_origin[d]) ? "NaN" :
+                              at_origin[d] > 0         ? "+inf" :
+                                                         "-inf") +
+                             ") " + known +
+                             ": give an expression that is finite wherever it is used."));
     return function;
   }
 } // namespace WheelRail
