@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""Print the parameter reference of doc/parameters.md (Markdown) from `wheelrail --help`.
+"""Print doc/parameters.md, the parameter reference (Markdown), from `wheelrail --help`.
 
-Usage: build/wheelrail --help | doc/parameter_table.py
+Usage: build/wheelrail --help | doc/parameter_table.py > doc/parameters.md
+tests/input/parameters_doc_01.sh checks that doc/parameters.md is this output.
 """
 import re
 import sys
@@ -25,6 +26,13 @@ for line in sys.stdin.read().split('\n'):
     elif not s:
         comment = []
 
+print("""# Parameter reference
+
+Every entry, with unit, default and allowed range (also printed by `build/wheelrail --help`;
+this table is made by `build/wheelrail --help | doc/parameter_table.py > doc/parameters.md`).
+Values outside the range, misspelt entries, unknown subsections, malformed numbers and missing
+include files stop the run with a message naming the entry and a non-zero exit status.
+""")
 current = None
 for section, name, value, text in rows:
     if section != current:
