@@ -190,12 +190,6 @@ namespace WheelRail
     /** Sum of the reference cell volumes of @p material [m^3]. */
     double
     mesh_volume(const types::material_id material = numbers::invalid_material_id) const;
-    /** Number of locally owned cells (all ranks: use MPI sum). */
-    unsigned int
-    n_local_cells() const
-    {
-      return n_cells;
-    }
     /** Number of locally owned cells in family batches (8 children of one
      *  parent, 27 nodes gathered and scattered instead of 64). */
     unsigned int

@@ -186,12 +186,6 @@ namespace WheelRail
     {
       return v;
     }
-    /** External force f_ext: gravity (and a centrifugal load), condensed. */
-    const VectorType &
-    external_force() const
-    {
-      return f_ext;
-    }
     double
     time() const
     {
