@@ -10,6 +10,7 @@
 #include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/simulator/simulator.h>
+#include <wheelrail/verification/verdict.h>
 
 #include <algorithm>
 #include <chrono>
@@ -181,6 +182,8 @@ main(int argc, char **argv)
         parameters.output.resume = true;
       WheelRail::Simulator simulator(parameters, prm, comm);
       simulator.run();
+      // in test mode a check that said "no" fails the run
+      WheelRail::Verification::check_verdicts(parameters, comm);
     }
   catch (const WheelRail::StopSignal::Stopped &e)
     {

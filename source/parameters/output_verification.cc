@@ -229,6 +229,14 @@ namespace WheelRail
                       "test mode only what is robust is printed: no step "
                       "rows, patch lines or end summary; the checks' values "
                       "with two digits and their verdict.");
+    prm.declare_entry("Expected verdict",
+                      "yes",
+                      Patterns::Selection("yes|no"),
+                      "In test mode, what the checks of the run must say: 'yes' "
+                      "(every check passes; a 'no' ends the run with an error "
+                      "and a non-zero exit status, so that a test's reference "
+                      "cannot store a failed check) or 'no' (a test that "
+                      "shows a check failing: at least one must say 'no') [-].");
     prm.declare_entry("Clamped",
                       "false",
                       Patterns::Bool(),
@@ -259,6 +267,7 @@ namespace WheelRail
     hourglass_limit     = prm.get_double("Hourglass limit");
     bar_clamped         = prm.get_bool("Clamped");
     round_off_sensitive = prm.get_bool("Round-off sensitive");
+    expected_verdict    = prm.get("Expected verdict");
     prm.leave_subsection();
   }
 } // namespace WheelRail

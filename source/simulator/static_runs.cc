@@ -8,6 +8,7 @@
 #include <wheelrail/solver/st_venant_kirchhoff.h>
 #include <wheelrail/solver/static_solver.h>
 #include <wheelrail/verification/hertz_patch.h>
+#include <wheelrail/verification/verdict.h>
 
 #include <cmath>
 
@@ -96,7 +97,7 @@ namespace WheelRail
               << "  largest interior nodal force / largest boundary nodal force : "
               << fmt(max_interior / max_boundary, 1) << std::endl
               << "  both within " << fmt(tol) << "                : "
-              << (max_stress_error < tol && max_interior / max_boundary < tol ? "yes" : "no")
+              << Verification::verdict(max_stress_error < tol && max_interior / max_boundary < tol)
               << std::endl;
         return;
       }
@@ -130,7 +131,7 @@ namespace WheelRail
           << "  largest nodal force / (E h_min^2 |R - I|)   : " << fmt(max_force / scale, 1)
           << std::endl
           << "  both within " << fmt(tol) << "                      : "
-          << (max_vm / E < tol && max_force / scale < tol ? "yes" : "no") << std::endl;
+          << Verification::verdict(max_vm / E < tol && max_force / scale < tol) << std::endl;
   }
 
 

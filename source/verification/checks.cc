@@ -3,6 +3,7 @@
 
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/checks.h>
+#include <wheelrail/verification/verdict.h>
 
 #include <cmath>
 
@@ -52,7 +53,7 @@ namespace WheelRail
       else
         access.pcout << "  ";
       access.pcout << "tolerance " << fmt(tol)
-                   << ", within tolerance: " << (error <= tol ? "yes" : "no") << std::endl;
+                   << ", within tolerance: " << Verification::verdict(error <= tol) << std::endl;
     }
 
 
@@ -64,7 +65,7 @@ namespace WheelRail
       if (!access.robust_output_only())
         access.pcout << " " << fmt(value, 2);
       access.pcout << " (limit " << fmt(limit)
-                   << "), within: " << (std::abs(value) <= limit ? "yes" : "no") << std::endl;
+                   << "), within: " << Verification::verdict(std::abs(value) <= limit) << std::endl;
     }
 
 
@@ -198,9 +199,8 @@ namespace WheelRail
                       << fmt(ratio, 3) << std::endl
                       << "  hourglass-mode energy at QM = 0.1 / internal energy     : "
                       << fmt(ratio_ref, 3) << std::endl
-                      << "  limit " << fmt(vp.hourglass_limit)
-                      << ", within limit: " << (ratio_ref <= vp.hourglass_limit ? "yes" : "no")
-                      << std::endl;
+                      << "  limit " << fmt(vp.hourglass_limit) << ", within limit: "
+                      << Verification::verdict(ratio_ref <= vp.hourglass_limit) << std::endl;
     }
 
 
@@ -214,7 +214,7 @@ namespace WheelRail
                       << "  largest |balance| / energy scale : "
                       << fmt(in.balance.max_balance_error(), 2) << std::endl
                       << "  tolerance " << fmt(tol) << ", within tolerance: "
-                      << (in.balance.max_balance_error() <= tol ? "yes" : "no") << std::endl;
+                      << Verification::verdict(in.balance.max_balance_error() <= tol) << std::endl;
     }
   } // namespace Verification
 } // namespace WheelRail

@@ -1,6 +1,7 @@
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/checks.h>
+#include <wheelrail/verification/verdict.h>
 
 #include <cmath>
 
@@ -90,7 +91,7 @@ namespace WheelRail
                           << fmt(free * 1e3, 3) << " mm" << std::endl
                           << "  drift / elastic slip " << fmt(drift / bound, 2) << " (limit 2)"
                           << std::endl
-                          << "  within tolerance: " << (drift <= 2 * bound ? "yes" : "no")
+                          << "  within tolerance: " << Verification::verdict(drift <= 2 * bound)
                           << std::endl;
         }
       else
@@ -251,7 +252,8 @@ namespace WheelRail
                 "kN",
                 1e-3);
       in.access.pcout << "  largest |F_N - F_N(0)| / F_N(0) in the first 100 steps: "
-                      << fmt(jump, 2) << " (limit 0.02), within: " << (jump <= 0.02 ? "yes" : "no")
+                      << fmt(jump, 2)
+                      << " (limit 0.02), within: " << Verification::verdict(jump <= 0.02)
                       << std::endl;
     }
 

@@ -8,6 +8,7 @@
 #include <wheelrail/verification/expected_errors.h>
 #include <wheelrail/verification/hertz.h>
 #include <wheelrail/verification/hertz_patch.h>
+#include <wheelrail/verification/verdict.h>
 
 #include <cmath>
 #include <iomanip>
@@ -138,9 +139,9 @@ namespace WheelRail
                      << std::endl;
       if (h > 0)
         access.pcout << "  within what the convergence study expects at h = " << fmt(h * 1e3, 3)
-                     << " mm (doc/convergence.md): " << (ok ? "yes" : "no") << std::endl;
+                     << " mm (doc/convergence.md): " << Verification::verdict(ok) << std::endl;
       else
-        access.pcout << "  within tolerance " << fmt(tolerance) << ": " << (ok ? "yes" : "no")
+        access.pcout << "  within tolerance " << fmt(tolerance) << ": " << Verification::verdict(ok)
                      << std::endl;
       return ok;
     }

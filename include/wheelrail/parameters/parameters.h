@@ -312,6 +312,7 @@ namespace WheelRail
     double       hourglass_limit;
     bool         round_off_sensitive; ///< test mode prints robust values only
     bool         bar_clamped;
+    std::string  expected_verdict; ///< "yes", or "no" for a test of a failing check
 
     static void
     declare_parameters(ParameterHandler &prm);
