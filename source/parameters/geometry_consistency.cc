@@ -10,7 +10,7 @@
 
 #include <wheelrail/parameters/consistency.h>
 #include <wheelrail/simulator/format.h>
-#include <wheelrail/verification/hertz.h>
+#include <wheelrail/verification/hertz_patch.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,22 +24,12 @@ namespace WheelRail
 
     namespace
     {
-      /**
-       * Hertz's half-length along x of the patch of the wheel (radius R
-       * along x, flat across) on the rail (flat along x, crown radius
-       * across) under the wheel load @p F [m]; 0 without a load.
-       */
+      /** Hertz's half-length along x of the patch under the wheel load
+       *  @p F [m]; 0 without a load. */
       double
       patch_half_length(const Parameters &p, const double F)
       {
-        const GeometryParameters &g = p.geometry;
-        const MaterialParameters &m = p.material;
-        if (!(F > 0))
-          return 0;
-        const double E_star = m.youngs_modulus / (2 * (1 - m.poisson_ratio * m.poisson_ratio));
-        const double A_x = 0.5 / g.wheel_radius, B_y = 0.5 / g.rail_profile_radius;
-        return A_x <= B_y ? hertz_contact(A_x, B_y, F, E_star).a :
-                            hertz_contact(B_y, A_x, F, E_star).b;
+        return F > 0 ? Verification::wheel_rail_hertz(p, F).a : 0.;
       }
 
 

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -37,12 +38,18 @@ namespace WheelRail
     HertzSolution
     wheel_rail_hertz(const Parameters &parameters, const double normal_force)
     {
-      // curvatures A = 1/(2 R_w) along the rail, B = 1/(2 R_rail) across it
-      const GeometryParameters &g = parameters.geometry;
-      return hertz_contact(0.5 / g.wheel_radius,
-                           0.5 / g.rail_profile_radius,
-                           normal_force,
-                           effective_modulus(parameters.material));
+      // curvatures 1/(2 R_w) along the rail, 1/(2 R_rail) across it;
+      // hertz_contact() takes the smaller first, so a crown flatter than the
+      // wheel swaps the semi-axes back to a along x, b along y
+      const GeometryParameters &g      = parameters.geometry;
+      const double              along  = 0.5 / g.wheel_radius;
+      const double              across = 0.5 / g.rail_profile_radius;
+      const double              E_star = effective_modulus(parameters.material);
+      if (along <= across)
+        return hertz_contact(along, across, normal_force, E_star);
+      HertzSolution h = hertz_contact(across, along, normal_force, E_star);
+      std::swap(h.a, h.b);
+      return h;
     }
 
 

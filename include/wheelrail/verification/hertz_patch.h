@@ -22,7 +22,8 @@ namespace WheelRail
 
     /** Hertz's solution for the wheel on the rail head under the normal
      *  force @p normal_force [N]: curvatures 1/(2 R_w) along the rail and
-     *  1/(2 R_rail) across it, the parameters' material. */
+     *  1/(2 R_rail) across it, the parameters' material; a is the
+     *  semi-axis along the rail (x), b across it (y), whichever is longer. */
     HertzSolution
     wheel_rail_hertz(const Parameters &parameters, const double normal_force);
 
