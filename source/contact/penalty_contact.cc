@@ -30,12 +30,9 @@ namespace WheelRail
     , bulk_modulus(material.lambda() + 2. / 3. * material.mu())
     , area_penalty(contact.penalty_stiffness == "area")
   {
-    if (prm.friction_law != "none")
+    if (prm.law)
       {
-        law = FrictionLaw::create(prm.friction_law,
-                                  prm.static_coefficient,
-                                  prm.dynamic_coefficient,
-                                  prm.decay);
+        law = prm.law;
         FrictionModel::Options options;
         options.irreversible_slip_rate = prm.slip_rate == "irreversible";
         options.relaxation_length      = prm.relaxation_length;

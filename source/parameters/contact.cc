@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/contact/friction_law.h>
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <cmath>
@@ -19,6 +20,7 @@ namespace WheelRail
   ContactParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
+    const EntryFlags flags("Contact");
     prm.declare_entry("Enabled",
                       "true",
                       Patterns::Bool(),
@@ -70,6 +72,7 @@ namespace WheelRail
                       Patterns::Double(1e-6, 100),
                       "k_t / k of the elastic friction predictor [-], range "
                       "[1e-6, 100].");
+    flags.mark("Tangential stiffness factor", EntryFlag::static_start_free);
     prm.declare_entry("Contact damping",
                       "0",
                       Patterns::Double(0, 1),
@@ -110,25 +113,7 @@ namespace WheelRail
                       "longest edge (the faceting of curved surfaces) stops the "
                       "run: the bodies overlap as placed [m], range [0, 0.01]. "
                       "Set it to start with a deliberate overlap.");
-    prm.declare_entry("Friction law",
-                      "exponential",
-                      Patterns::Selection("none|" + FrictionLaw::names()),
-                      "'none': frictionless; 'constant': Coulomb, f = Static "
-                      "friction coefficient; 'exponential': f = f_D + (f_S - "
-                      "f_D) exp(-k s_n) (paper eq. 1), s_n the micro-slip "
-                      "velocity.");
-    prm.declare_entry("Static friction coefficient",
-                      "0.5",
-                      Patterns::Double(0, 10),
-                      "f_S [-], range [0, 10].");
-    prm.declare_entry("Dynamic friction coefficient",
-                      "0.32",
-                      Patterns::Double(0, 10),
-                      "f_D [-], range [0, 10].");
-    prm.declare_entry("Decay coefficient",
-                      "6",
-                      Patterns::Double(0, 1e6),
-                      "k of the exponential law [s/m], range [0, 1e6].");
+    FrictionLaw::declare_parameters(prm);
     prm.declare_entry("Slip rate",
                       "total",
                       Patterns::Selection("total|irreversible"),
@@ -144,6 +129,7 @@ namespace WheelRail
                       "sliding is unstable where it exists "
                       "(doc/friction_regularisation.md): combine it with a "
                       "relaxation.");
+    flags.mark("Slip rate", EntryFlag::static_start_free);
     prm.declare_entry("Friction relaxation length",
                       "0",
                       Patterns::Double(0, 1),
@@ -152,6 +138,7 @@ namespace WheelRail
                       "distance L, d theta/dt = -(s_n / L + 1 / tau)(theta - "
                       "f(s_n)) (rate-and-state style memory); 0: no "
                       "relaxation by slip.");
+    flags.mark("Friction relaxation length", EntryFlag::static_start_free);
     prm.declare_entry("Friction relaxation time",
                       "0",
                       Patterns::Double(0, 1),
@@ -159,6 +146,7 @@ namespace WheelRail
                       "state in time (see Friction relaxation length); 0: no "
                       "relaxation in time. Both 0: f = f(s_n) at once "
                       "(paper).");
+    flags.mark("Friction relaxation time", EntryFlag::static_start_free);
     prm.declare_entry("Tangential damping",
                       "0",
                       Patterns::Double(0, 1),
@@ -166,6 +154,7 @@ namespace WheelRail
                       "fraction of the critical damping 2 sqrt(k_t m) of the "
                       "slave node on its tangential spring [-], range [0, 1]; "
                       "it acts in stick (the cone caps it in slip).");
+    flags.mark("Tangential damping", EntryFlag::static_start_free);
     prm.leave_subsection();
   }
 
@@ -189,9 +178,7 @@ namespace WheelRail
     rebuild_fraction          = prm.get_double("Rebuild fraction");
     initial_overlap_tolerance = prm.get_double("Initial overlap tolerance");
     friction_law              = prm.get("Friction law");
-    static_coefficient        = prm.get_double("Static friction coefficient");
-    dynamic_coefficient       = prm.get_double("Dynamic friction coefficient");
-    decay                     = prm.get_double("Decay coefficient");
+    law                       = FrictionLaw::create(prm);
     slip_rate                 = prm.get("Slip rate");
     relaxation_length         = prm.get_double("Friction relaxation length");
     relaxation_time           = prm.get_double("Friction relaxation time");

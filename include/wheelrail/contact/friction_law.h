@@ -8,6 +8,7 @@
 #ifndef wheelrail_contact_friction_law_h
 #define wheelrail_contact_friction_law_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 
 #include <cmath>
@@ -17,21 +18,35 @@
 
 namespace WheelRail
 {
-  /** Interface of a friction law. */
+  /**
+   * Interface of a friction law, and the registry of the laws by name.
+   *
+   * A law is one file that defines a class derived from FrictionLaw and a
+   * FrictionLaw::Plugin: its name for Contact/Friction law, a line for the
+   * parameter's documentation, a function that declares the entries only
+   * it reads (in subsection Contact) and one that makes the law from the
+   * parsed parameters. The laws of the library are listed in
+   * source/contact/friction_law.cc (one line each); a law compiled into
+   * another executable registers itself with
+   * WHEELRAIL_REGISTER_FRICTION_LAW (doc/developer.md).
+   */
   class FrictionLaw
   {
   public:
-    /** The parameters of Contact a law may use. */
-    struct Coefficients
+    /** What a law's file defines for the registry. */
+    struct Plugin
     {
-      double static_coefficient;  ///< f_S [-]
-      double dynamic_coefficient; ///< f_D [-]
-      double decay;               ///< k [s/m]
+      /** The name Contact/Friction law selects it by. */
+      const char *name;
+      /** What it computes, for the documentation of Contact/Friction law. */
+      const char *description;
+      /** Declare the entries only this law reads, in subsection Contact
+       *  (the handler is in it); nullptr if it has none. */
+      void (*declare_parameters)(dealii::ParameterHandler &prm);
+      /** The law from the parsed parameters, the handler in subsection
+       *  Contact. */
+      std::unique_ptr<FrictionLaw> (*create)(const dealii::ParameterHandler &prm);
     };
-
-    /** What a law's file defines for the registry: the law for the
-     *  coefficients. */
-    using Factory = std::unique_ptr<FrictionLaw>(const Coefficients &);
 
     virtual ~FrictionLaw() = default;
 
@@ -54,8 +69,23 @@ namespace WheelRail
     describe(const std::function<std::string(double)> &format) const = 0;
 
     /**
-     * The law registered as @p name (see source/contact/friction_law.cc),
-     * with the coefficients it uses of those given.
+     * Declare Contact/Friction law (a selection of "none" and the
+     * registered names), the coefficients several laws read (Static and
+     * Dynamic friction coefficient, Decay coefficient) and every
+     * registered law's own entries. The handler is in subsection Contact.
+     */
+    static void
+    declare_parameters(dealii::ParameterHandler &prm);
+
+    /** The law selected by Contact/Friction law, nullptr for "none"; the
+     *  handler is in subsection Contact. */
+    static std::unique_ptr<FrictionLaw>
+    create(const dealii::ParameterHandler &prm);
+
+    /**
+     * The law registered as @p name with the shared coefficients f_S, f_D
+     * and k and every other entry at its default (unit tests, the 1D
+     * slider).
      */
     static std::unique_ptr<FrictionLaw>
     create(const std::string &name,
@@ -63,11 +93,29 @@ namespace WheelRail
            const double       dynamic_coefficient,
            const double       decay);
 
-    /** Names accepted by create(), in the registry's order, as a
-     *  Patterns::Selection string ("constant|exponential"). */
+    /** Names of the registered laws, sorted, as a Patterns::Selection
+     *  string ("constant|exponential"). */
     static std::string
     names();
+
+    /** Add @p plugin to the registry; a second law of the same name is an
+     *  error. Returns true (for a static initialiser). */
+    static bool
+    register_law(const Plugin &plugin);
   };
+
+
+
+/**
+ * Register the FrictionLaw::Plugin @p plugin of a law compiled outside the
+ * library (a test's or a user's executable) when the program starts.
+ */
+#define WHEELRAIL_REGISTER_FRICTION_LAW(plugin)                              \
+  namespace                                                                 \
+  {                                                                         \
+    [[maybe_unused]] const bool wheelrail_friction_law_registered_##plugin = \
+      ::WheelRail::FrictionLaw::register_law(plugin);                       \
+  }
 
 
 

@@ -452,7 +452,7 @@ namespace WheelRail
 
     const ContactParameters     &prm;
     MPI_Comm                     mpi_communicator;
-    std::unique_ptr<FrictionLaw> law;
+    std::shared_ptr<const FrictionLaw> law;
     /** The friction step at a slave node (law, slip rate, relaxation). */
     std::unique_ptr<FrictionModel> friction;
     double                         bulk_modulus;

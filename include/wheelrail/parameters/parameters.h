@@ -16,6 +16,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <wheelrail/postprocess/registry.h>
+
 #include <map>
 #include <memory>
 #include <string>
@@ -180,6 +182,8 @@ namespace WheelRail
     parse_parameters(ParameterHandler &prm);
   };
 
+  class FrictionLaw;
+
   /** Penalty node-to-segment contact and friction (SPEC 4). */
   struct ContactParameters
   {
@@ -196,10 +200,10 @@ namespace WheelRail
     double             search_margin;
     double             rebuild_fraction;
     double             initial_overlap_tolerance; ///< [m], see check_initial_overlap()
-    std::string        friction_law;
-    double             static_coefficient;
-    double             dynamic_coefficient;
-    double             decay;
+    std::string        friction_law; ///< its name, "none" for no friction
+    /** The law with its coefficients (FrictionLaw::create()), null for
+     *  "none". */
+    std::shared_ptr<const FrictionLaw> law;
     std::string        slip_rate;          ///< "total" (paper) or "irreversible"
     double             relaxation_length;  ///< L of the friction state [m], 0: off
     double             relaxation_time;    ///< tau of the friction state [s], 0: off
@@ -293,9 +297,16 @@ namespace WheelRail
     double        checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
     unsigned long stop_after_step;     ///< stop (with a checkpoint) after this step, 0 = never
     bool          resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
+    /** Output/Postprocessors: the selected ones, each by name with its
+     *  parsed parameters (postprocess/registry.h). */
+    std::vector<std::pair<std::string, PostprocessorFactory>> postprocessors;
 
     static void
     declare_parameters(ParameterHandler &prm);
+    /** Output/Checkpoint interval, whose documentation lists the entries
+     *  marked resumable: declared after all others. */
+    static void
+    declare_checkpoint_interval(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
   };

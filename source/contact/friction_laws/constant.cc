@@ -46,10 +46,13 @@ namespace WheelRail
 
 
 
-    std::unique_ptr<FrictionLaw>
-    constant(const FrictionLaw::Coefficients &c)
-    {
-      return std::make_unique<ConstantFriction>(c.static_coefficient);
-    }
+    extern const FrictionLaw::Plugin constant;
+    const FrictionLaw::Plugin        constant = {
+      "constant",
+      "Coulomb, f = Static friction coefficient",
+      nullptr,
+      [](const dealii::ParameterHandler &prm) -> std::unique_ptr<FrictionLaw> {
+        return std::make_unique<ConstantFriction>(prm.get_double("Static friction coefficient"));
+      }};
   } // namespace FrictionLaws
 } // namespace WheelRail

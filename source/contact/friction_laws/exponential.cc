@@ -48,12 +48,15 @@ namespace WheelRail
 
 
 
-    std::unique_ptr<FrictionLaw>
-    exponential(const FrictionLaw::Coefficients &c)
-    {
-      return std::make_unique<ExponentialFriction>(c.static_coefficient,
-                                                   c.dynamic_coefficient,
-                                                   c.decay);
-    }
+    extern const FrictionLaw::Plugin exponential;
+    const FrictionLaw::Plugin        exponential = {
+      "exponential",
+      "f = f_D + (f_S - f_D) exp(-k s_n) (paper eq. 1), s_n the micro-slip velocity",
+      nullptr,
+      [](const dealii::ParameterHandler &prm) -> std::unique_ptr<FrictionLaw> {
+        return std::make_unique<ExponentialFriction>(prm.get_double("Static friction coefficient"),
+                                                   prm.get_double("Dynamic friction coefficient"),
+                                                   prm.get_double("Decay coefficient"));
+      }};
   } // namespace FrictionLaws
 } // namespace WheelRail
