@@ -125,41 +125,6 @@ namespace WheelRail
 
 
 
-    const std::set<std::string> &
-    resumable_entries()
-    {
-      // Not here, as they change the integrated state or its recorded
-      // history: the mesh and geometry, material, time step and damping,
-      // boundary and initial conditions, contact and friction, wheelset,
-      // static solve (the start the checkpoint continues), probe point
-      // and component, the problem's geometry and mode, test mode and the
-      // check itself.
-      static const std::set<std::string> entries = {
-        // the checkpoint is read from the output directory, wherever it is
-        "Problem/Output directory",
-        "Problem/Dry run",
-        "Time integration/End time",
-        // confirms a longer End time; the integrated state does not see it
-        "Time integration/Allow long runs",
-        "Output/Report interval",
-        "Output/Statistics interval",
-        "Output/VTU interval",
-        "Output/VTU compression",
-        "Output/Divergence limit",
-        "Output/Checkpoint interval",
-        "Output/Checkpoint minutes",
-        "Output/Stop after step",
-        "Output/Resume",
-        "Output/Timing warm-up steps",
-        // thresholds of the verdicts at the end of the run
-        "Verification/Tolerance",
-        "Verification/Wave threshold",
-        "Verification/Hourglass limit"};
-      return entries;
-    }
-
-
-
     namespace
     {
       /** Whether two values of an entry mean the same: equal text, or the

@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/parameters/vector_entry.h>
 
@@ -131,10 +132,12 @@ namespace WheelRail
   InitialParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Initial conditions");
+    const EntryFlags flags("Initial conditions");
     prm.declare_entry("Wheel velocity",
                       "0, 0, 0",
                       vector_pattern(),
                       "Initial translational velocity of the wheel [m/s].");
+    flags.mark("Wheel velocity", EntryFlag::static_start_free);
     prm.declare_entry("Wheel angular velocity",
                       "0",
                       Patterns::Double(-1e4, 1e4),
@@ -142,15 +145,18 @@ namespace WheelRail
                       "through its centre [rad/s], range [-1e4, 1e4]; "
                       "rolling towards +x is positive: +V/R_w (the contact "
                       "point then has omega e_y x (-R e_z) = -V e_x).");
+    flags.mark("Wheel angular velocity", EntryFlag::static_start_free);
     prm.declare_entry("Velocity function",
                       "0; 0; 0",
                       Patterns::Anything(),
                       "Additional initial velocity of every node [m/s]: three "
                       "muparser expressions 'vx; vy; vz' in x, y, z (m).");
+    flags.mark("Velocity function", EntryFlag::static_start_free);
     prm.declare_entry("Velocity function constants",
                       "",
                       Patterns::Anything(),
                       "Constants for the expression, 'name=value, ...'.");
+    flags.mark("Velocity function constants", EntryFlag::static_start_free);
     prm.leave_subsection();
   }
 

@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/parameters/vector_entry.h>
 
@@ -70,10 +71,12 @@ namespace WheelRail
   SolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time integration");
+    const EntryFlags flags("Time integration");
     prm.declare_entry("End time",
                       "1e-4",
                       Patterns::Double(0, 10),
                       "Simulated time of the explicit run [s], range [0, 10].");
+    flags.mark("End time", EntryFlag::resumable);
     prm.declare_entry("Time step",
                       "0",
                       Patterns::Double(0, 1e-2),
@@ -89,6 +92,7 @@ namespace WheelRail
                       "step), or with a Time step below a thousandth of the stable "
                       "step [-]: without it such a run is refused before it starts, "
                       "with its step count and an estimate of its wall time.");
+    flags.mark("Allow long runs", EntryFlag::resumable);
     prm.declare_entry("Courant factor",
                       "0.9",
                       Patterns::Double(0.01, 1.0),

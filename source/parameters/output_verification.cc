@@ -8,8 +8,10 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/base/checkpoint.h>
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/parameters/vector_entry.h>
+#include <wheelrail/postprocess/registry.h>
 
 #include <cmath>
 #include <string>
@@ -24,31 +26,33 @@ namespace WheelRail
   void
   OutputParameters::declare_parameters(ParameterHandler &prm)
   {
-    std::string resumable;
-    for (const std::string &entry : Checkpoint::resumable_entries())
-      resumable += (resumable.empty() ? "" : ", ") + entry;
     prm.enter_subsection("Output");
+    const EntryFlags flags("Output");
     prm.declare_entry("Report interval",
                       "1000",
                       Patterns::Integer(1, 1000000000),
                       "Steps between screen reports of time and energies "
                       "[-], range [1, 1e9].");
+    flags.mark("Report interval", EntryFlag::resumable);
     prm.declare_entry("Statistics interval",
                       "100",
                       Patterns::Integer(1, 1000000000),
                       "Steps between rows of the statistics file [-], range "
                       "[1, 1e9].");
+    flags.mark("Statistics interval", EntryFlag::resumable);
     prm.declare_entry("VTU interval",
                       "0",
                       Patterns::Integer(0, 1000000000),
                       "Steps between VTU/PVTU snapshots [-], range [0, 1e9]; "
                       "0 = first and last step only.");
+    flags.mark("VTU interval", EntryFlag::resumable);
     prm.declare_entry("VTU compression",
                       "fast",
                       Patterns::Selection("fast|best|none"),
                       "zlib level of the VTU snapshots: 'fast' (about 3 s "
                       "less per snapshot of the paper mesh than 'best', "
                       "files about 30 % larger), 'best', or 'none'.");
+    flags.mark("VTU compression", EntryFlag::resumable);
     prm.declare_entry("Patch averaging window",
                       "0",
                       Patterns::Double(0, 1e-3),
@@ -57,6 +61,7 @@ namespace WheelRail
                       "into patch_NAME_mean.csv (pressure, shear, s_n, adhesion and "
                       "slip fractions), range [0, 1e-3]; 0 = no means. The paper's "
                       "sampling interval is 5.7e-6 s.");
+    flags.mark("Patch averaging window", EntryFlag::static_start_free);
     prm.declare_entry("Patch series interval",
                       "0",
                       Patterns::Integer(0, 1000000000),
@@ -65,6 +70,7 @@ namespace WheelRail
                       "patch_series.h5, which patch_series.xdmf lists for "
                       "ParaView (a movie of the patch), range [0, 1e9]; 0 = none. "
                       "The paper's 175 kHz sampling is every 219 steps of 2.6e-8 s.");
+    flags.mark("Patch series interval", EntryFlag::static_start_free);
     prm.declare_entry("Patch series tread",
                       "true",
                       Patterns::Bool(),
@@ -72,16 +78,19 @@ namespace WheelRail
                       "over the solution zone, each frame with its own mesh at the "
                       "current positions (patch_series_tread.xdmf) [-]: about 125 kB "
                       "per frame on the paper mesh, against 18 kB for the rail top.");
+    flags.mark("Patch series tread", EntryFlag::static_start_free);
     prm.declare_entry("Probe point",
                       "0, 0, 0",
                       vector_pattern(),
                       "A velocity history is recorded at the node nearest "
                       "to this point [m] (file probe.csv).");
+    flags.mark("Probe point", EntryFlag::static_start_free);
     prm.declare_entry("Probe component",
                       "0",
                       Patterns::Integer(0, 2),
                       "Component (0 = x, 1 = y, 2 = z) used by the "
                       "verification checks on the probe [-].");
+    flags.mark("Probe component", EntryFlag::static_start_free);
     prm.declare_entry("Divergence limit",
                       "0.5",
                       Patterns::Double(1e-12, 1e6),
@@ -89,6 +98,54 @@ namespace WheelRail
                       "balance error exceeds this [-], range [1e-12, 1e6] "
                       "(an exploding energy; NaN or infinite energies always "
                       "stop it). Checked at statistics steps.");
+    flags.mark("Divergence limit", EntryFlag::resumable);
+    prm.declare_entry("Checkpoint minutes",
+                      "0",
+                      Patterns::Double(0, 1e6),
+                      "Wall-clock minutes between checkpoints [min], range "
+                      "[0, 1e6]; 0 = none.");
+    flags.mark("Checkpoint minutes", EntryFlag::resumable);
+    prm.declare_entry("Stop after step",
+                      "0",
+                      Patterns::Integer(0, 2000000000),
+                      "Stop the explicit run after this step with a "
+                      "checkpoint [-], range [0, 2e9]; 0 = run to the end "
+                      "(for splitting a run, and the restart test).");
+    flags.mark("Stop after step", EntryFlag::resumable);
+    prm.declare_entry("Resume",
+                      "false",
+                      Patterns::Bool(),
+                      "Continue from the checkpoint in the output directory "
+                      "(the same as the command line flag --resume); see "
+                      "Checkpoint interval for what may change.");
+    flags.mark("Resume", EntryFlag::resumable);
+    prm.declare_entry("Timing warm-up steps",
+                      "0",
+                      Patterns::Integer(0, 1000000000),
+                      "Steps before the timers of the explicit run start [-], "
+                      "range [0, 1e9]: the time split (elements, contact, "
+                      "update, communication, output) and ns per "
+                      "element-step printed at the end and written to "
+                      "timing.csv count only the steps after them (a "
+                      "benchmark leaves out the first, cold steps).");
+    flags.mark("Timing warm-up steps", EntryFlag::resumable);
+    Postprocessors::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::declare_checkpoint_interval(ParameterHandler &prm)
+  {
+    // its documentation lists the resumable entries: declared after all
+    // others are marked
+    prm.enter_subsection("Output");
+    const EntryFlags flags("Output");
+    flags.mark("Checkpoint interval", EntryFlag::resumable);
+    std::string resumable;
+    for (const std::string &entry : EntryFlags::marked(EntryFlag::resumable))
+      resumable += (resumable.empty() ? "" : ", ") + entry;
     prm.declare_entry("Checkpoint interval",
                       "0",
                       Patterns::Integer(0, 1000000000),
@@ -102,32 +159,6 @@ namespace WheelRail
                       "stops on a damaged file, and on any changed entry but "
                       "these (which it lists): " +
                         resumable + ".");
-    prm.declare_entry("Checkpoint minutes",
-                      "0",
-                      Patterns::Double(0, 1e6),
-                      "Wall-clock minutes between checkpoints [min], range "
-                      "[0, 1e6]; 0 = none.");
-    prm.declare_entry("Stop after step",
-                      "0",
-                      Patterns::Integer(0, 2000000000),
-                      "Stop the explicit run after this step with a "
-                      "checkpoint [-], range [0, 2e9]; 0 = run to the end "
-                      "(for splitting a run, and the restart test).");
-    prm.declare_entry("Resume",
-                      "false",
-                      Patterns::Bool(),
-                      "Continue from the checkpoint in the output directory "
-                      "(the same as the command line flag --resume); see "
-                      "Checkpoint interval for what may change.");
-    prm.declare_entry("Timing warm-up steps",
-                      "0",
-                      Patterns::Integer(0, 1000000000),
-                      "Steps before the timers of the explicit run start [-], "
-                      "range [0, 1e9]: the time split (elements, contact, "
-                      "update, communication, output) and ns per "
-                      "element-step printed at the end and written to "
-                      "timing.csv count only the steps after them (a "
-                      "benchmark leaves out the first, cold steps).");
     prm.leave_subsection();
   }
 
@@ -152,6 +183,7 @@ namespace WheelRail
     checkpoint_minutes    = prm.get_double("Checkpoint minutes");
     stop_after_step       = prm.get_integer("Stop after step");
     resume                = prm.get_bool("Resume");
+    postprocessors        = Postprocessors::parse_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -161,6 +193,7 @@ namespace WheelRail
   VerificationParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Verification");
+    const EntryFlags flags("Verification");
     prm.declare_entry(
       "Check",
       "none",
@@ -190,6 +223,7 @@ namespace WheelRail
       "axle, no torque): the mean F_N over the second half against the static "
       "load, and the mean F_L / F_N and the mean longitudinal creepage of the "
       "trailing part near zero.");
+    flags.mark("Check", EntryFlag::static_start_free);
     prm.declare_entry("Displacement gradient",
                       "1e-3, 2e-4, -3e-4, 5e-4, -1e-3, 2e-4, 1e-4, 3e-4, 2e-3",
                       Patterns::List(Patterns::Double(-1, 1), 9, 9, ","),
@@ -209,16 +243,19 @@ namespace WheelRail
                       "0.02",
                       Patterns::Double(0, 1),
                       "Relative tolerance of the check [-], range [0, 1].");
+    flags.mark("Tolerance", EntryFlag::resumable);
     prm.declare_entry("Wave threshold",
                       "0.5",
                       Patterns::Double(0.01, 0.99),
                       "Fraction of the far-end steady velocity that marks "
                       "the arrival of the front [-], range [0.01, 0.99].");
+    flags.mark("Wave threshold", EntryFlag::resumable);
     prm.declare_entry("Hourglass limit",
                       "0.1",
                       Patterns::Double(0, 10),
                       "Largest accepted ratio of hourglass-mode energy to "
                       "internal energy [-], range [0, 10].");
+    flags.mark("Hourglass limit", EntryFlag::resumable);
     prm.declare_entry("Round-off sensitive",
                       "false",
                       Patterns::Bool(),

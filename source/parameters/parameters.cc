@@ -29,6 +29,7 @@ namespace WheelRail
     WheelsetParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
+    OutputParameters::declare_checkpoint_interval(prm);
   }
 
 

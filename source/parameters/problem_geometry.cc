@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/parameters/vector_entry.h>
 
@@ -24,6 +25,7 @@ namespace WheelRail
   ProblemParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Problem");
+    const EntryFlags flags("Problem");
     prm.declare_entry("Geometry",
                       "wheel and rail",
                       Patterns::Selection("wheel and rail|bar|block on plate"),
@@ -51,16 +53,19 @@ namespace WheelRail
                       Patterns::DirectoryName(),
                       "Directory for all files of the run; created if "
                       "missing. Must not be named 'output' in a test.");
+    flags.mark("Output directory", EntryFlag::resumable);
     prm.declare_entry("Test mode",
                       "false",
                       Patterns::Bool(),
                       "Reproducible screen output for the test suite: no wall "
                       "times, no paths, no VTU files; results in mm, kN, MPa.");
+    flags.mark("Test mode", EntryFlag::static_start_free);
     prm.declare_entry("Dry run",
                       "false",
                       Patterns::Bool(),
                       "Parse, build the mesh, print the setup summary and "
                       "stop without time stepping.");
+    flags.mark("Dry run", EntryFlag::resumable);
     prm.leave_subsection();
   }
 

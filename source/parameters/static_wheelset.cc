@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <cmath>
@@ -96,6 +97,7 @@ namespace WheelRail
   WheelsetParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Wheelset");
+    const EntryFlags flags("Wheelset");
     prm.declare_entry("Unsprung mass",
                       "900",
                       Patterns::Double(1, 1e6),
@@ -129,17 +131,20 @@ namespace WheelRail
                       Patterns::Double(0, 1),
                       "mu_n = T / (R_w F_N,static): sets the driving torque T "
                       "about the axle [-], range [0, 1].");
+    flags.mark("Nominal traction coefficient", EntryFlag::static_start_free);
     prm.declare_entry("Torque ramp time",
                       "0",
                       Patterns::Double(0, 10),
                       "The torque rises linearly from 0 over this time [s], "
                       "range [0, 10]; 0 = applied at once.");
+    flags.mark("Torque ramp time", EntryFlag::static_start_free);
     prm.declare_entry("Initial creepage",
                       "0",
                       Patterns::Double(-0.1, 0.1),
                       "Longitudinal creepage xi_0 = (V - omega r) / V with which the "
                       "wheel starts rolling [-], range [-0.1, 0.1]; negative for a "
                       "driving wheel (omega r > V), 0 = free rolling.");
+    flags.mark("Initial creepage", EntryFlag::static_start_free);
     prm.declare_entry("Creepage control time",
                       "0",
                       Patterns::Double(0, 10),
@@ -152,6 +157,7 @@ namespace WheelRail
                       "spin-up of the wheelset under a torque (a first-order lag of "
                       "about 1 ms); the wheel's torsional vibration that the onset "
                       "of traction excites is removed by the run-up damping.");
+    flags.mark("Creepage control time", EntryFlag::static_start_free);
     prm.declare_entry("Run-up damping",
                       "0",
                       Patterns::Double(0, 1e6),
@@ -171,10 +177,12 @@ namespace WheelRail
                       "mode of angular frequency w at "
                       "alpha = 2 w. Its dissipation enters "
                       "the energy balance.");
+    flags.mark("Run-up damping", EntryFlag::static_start_free);
     prm.declare_entry("Run-up time",
                       "0",
                       Patterns::Double(0, 10),
                       "The run-up damping acts while t < this time [s], range [0, 10].");
+    flags.mark("Run-up time", EntryFlag::static_start_free);
     prm.declare_entry("Run-up damping shape",
                       "nodes",
                       Patterns::Selection("nodes|wheel rigid motion"),
@@ -190,6 +198,7 @@ namespace WheelRail
                       "on its web (the torsional mode that the onset of traction "
                       "excites); a steadily rolling wheel has w = 0, so this damping "
                       "may act while the patch is sampled (Run-up time = End time).");
+    flags.mark("Run-up damping shape", EntryFlag::static_start_free);
     prm.declare_entry("Static start",
                       "true",
                       Patterns::Bool(),
@@ -210,6 +219,7 @@ namespace WheelRail
                       "count or mesh stops the run naming them. For the runs of a "
                       "creep curve or a traction sweep (scripts/creep_curve.py, "
                       "sweep.py). Empty: always solved, nothing written.");
+    flags.mark("Static start state", EntryFlag::static_start_free);
     prm.leave_subsection();
   }
 

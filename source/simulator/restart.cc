@@ -8,6 +8,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/base/checkpoint.h>
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
@@ -166,7 +167,9 @@ namespace WheelRail
 
     // the parameters: the same on every rank, so every rank decides alike
     std::vector<Checkpoint::Change> allowed, refused;
-    Checkpoint::compare_parameters(header.parameters, parameter_record, allowed, refused);
+    const std::set<std::string> &resumable = EntryFlags::entries(EntryFlag::resumable);
+    Checkpoint::compare_parameters(
+      header.parameters, parameter_record, allowed, refused, resumable);
     if (!refused.empty())
       {
         std::string message = "--resume: the checkpoint in '" + checkpoint_directory +
@@ -178,8 +181,8 @@ namespace WheelRail
           message += "\n" + c.entry + ": " + c.old_value + " -> " + c.new_value;
         message += "\nResume with the checkpoint's values, or start the run again. Only these "
                    "entries may change on resume:";
-        for (const auto &entry : Checkpoint::resumable_entries())
-          message += " " + entry + (entry == *Checkpoint::resumable_entries().rbegin() ? "." : ",");
+        for (const auto &entry : resumable)
+          message += " " + entry + (entry == *resumable.rbegin() ? "." : ",");
         AssertThrow(false, ExcMessage(message));
       }
 

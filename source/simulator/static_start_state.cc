@@ -10,6 +10,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/base/checkpoint.h>
+#include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/simulator/simulator.h>
 #include <wheelrail/solver/static_solver.h>
 
@@ -22,51 +23,6 @@ namespace WheelRail
 {
   namespace
   {
-    /** The entries the static start does not depend on: those a resume
-     *  may change, what acts only once the wheel rolls (friction, the
-     *  creepage and torque control, run-up damping, initial velocities)
-     *  and what is only recorded. The static solve evaluates the contact
-     *  without friction and without damping (PenaltyContact::add_forces()
-     *  with advance = false), so the friction entries leave its state as
-     *  they find it. */
-    const std::set<std::string> &
-    static_start_free_entries()
-    {
-      static const std::set<std::string> entries = [] {
-        std::set<std::string> e = Checkpoint::resumable_entries();
-        e.insert({"Contact/Friction law",
-                  "Contact/Static friction coefficient",
-                  "Contact/Dynamic friction coefficient",
-                  "Contact/Decay coefficient",
-                  "Contact/Slip rate",
-                  "Contact/Friction relaxation length",
-                  "Contact/Friction relaxation time",
-                  "Contact/Tangential stiffness factor",
-                  "Contact/Tangential damping",
-                  "Wheelset/Initial creepage",
-                  "Wheelset/Creepage control time",
-                  "Wheelset/Nominal traction coefficient",
-                  "Wheelset/Torque ramp time",
-                  "Wheelset/Run-up damping",
-                  "Wheelset/Run-up damping shape",
-                  "Wheelset/Run-up time",
-                  "Wheelset/Static start state",
-                  "Initial conditions/Velocity function",
-                  "Initial conditions/Velocity function constants",
-                  "Initial conditions/Wheel velocity",
-                  "Initial conditions/Wheel angular velocity",
-                  "Output/Patch averaging window",
-                  "Output/Patch series interval",
-                  "Output/Patch series tread",
-                  "Output/Probe point",
-                  "Output/Probe component",
-                  "Problem/Test mode",
-                  "Verification/Check"});
-        return e;
-      }();
-      return entries;
-    }
-
     /** The static result after the solver's and the contact's state. */
     template <class Archive>
     void
@@ -117,7 +73,11 @@ namespace WheelRail
 
     std::vector<Checkpoint::Change> allowed, refused;
     Checkpoint::compare_parameters(
-      header.parameters, parameter_record, allowed, refused, static_start_free_entries());
+      header.parameters,
+      parameter_record,
+      allowed,
+      refused,
+      EntryFlags::entries(EntryFlag::static_start_free));
     if (!refused.empty())
       {
         std::string message =

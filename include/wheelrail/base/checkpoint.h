@@ -11,7 +11,7 @@
  * marker). verify() checks the trailer before anything is read, so that a
  * damaged, truncated or older file stops a resumed run naming the file;
  * compare_parameters() says which entries differ from the run that wrote
- * the checkpoint, and resumable_entries() which of them may.
+ * the checkpoint, and which of them may (EntryFlag::resumable).
  */
 #ifndef wheelrail_checkpoint_h
 #define wheelrail_checkpoint_h
@@ -270,13 +270,6 @@ namespace WheelRail
     std::map<std::string, std::string>
     parameter_entries(const std::string &short_prm);
 
-    /** The entries that may differ between the run that wrote a
-     *  checkpoint and the run that resumes it: they change when and what is
-     *  written, where the run stops and the verdict thresholds, but not
-     *  the state that is integrated. */
-    const std::set<std::string> &
-    resumable_entries();
-
     /** One entry whose value differs. */
     struct Change
     {
@@ -292,7 +285,7 @@ namespace WheelRail
                        const std::string           &new_record,
                        std::vector<Change>         &allowed,
                        std::vector<Change>         &refused,
-                       const std::set<std::string> &may_differ = resumable_entries());
+                       const std::set<std::string> &may_differ);
 
     /** The file of rank @p rank in the state directory @p directory. */
     std::string

@@ -151,7 +151,7 @@ namespace WheelRail
     write_checkpoint();
     /** Before the setup of a resumed run: every rank file is complete and
      *  its checksum matches, the rank count is the checkpoint's, and no
-     *  parameter other than Checkpoint::resumable_entries() differs from
+     *  parameter other than EntryFlags::entries(EntryFlag::resumable) differs from
      *  the run that wrote it (those that do are listed). */
     void
     check_checkpoint();
