@@ -82,35 +82,30 @@ namespace
       line.error = "no case file given";
     return line;
   }
-} // namespace
-
-int
-main(int argc, char **argv)
-{
-  using namespace dealii;
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   comm  = MPI_COMM_WORLD;
-  const unsigned int               rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int               ranks = Utilities::MPI::n_mpi_processes(comm);
-
-  // SIGTERM and SIGINT from here on stop the run cleanly (stop_signal.h)
-  WheelRail::StopSignal::install();
-
-  const CommandLine  command_line = read_command_line(argc, argv);
-  const std::string &input        = command_line.input;
-  // errors meet on a communicator of their own, so that a rank that failed
-  // alone cannot be matched with a collective the others are waiting in
-  MPI_Comm error_comm;
-  MPI_Comm_dup(comm, &error_comm);
-  const std::unique_ptr<MPI_Comm, void (*)(MPI_Comm *)> free_error_comm(&error_comm,
-                                                                        [](MPI_Comm *c) {
-                                                                          MPI_Comm_free(c);
-                                                                        });
-  const auto                                            fail = [&](std::string message) {
+  /**
+   * Print the error @p message and return the exit status 1. The input
+   * file @p input is named without its directory, control characters are
+   * escaped. On several ranks: a check that every rank makes (the
+   * parameters, the setup, a divergence) fails on all ranks at once, and
+   * rank 0 prints each distinct message once; a rank that fails alone
+   * while the others go on would leave them waiting in a collective, so it
+   * prints its message and aborts the job. The ranks meet on @p error_comm,
+   * a communicator of their own, so that a rank that failed alone cannot be
+   * matched with a collective the others are waiting in.
+   */
+  int
+  report_failure(std::string        message,
+                 const std::string &input,
+                 const MPI_Comm     comm,
+                 const MPI_Comm     error_comm)
+  {
+    using namespace dealii;
+    const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int ranks = Utilities::MPI::n_mpi_processes(comm);
     // name the input file as the user knows it, without its directory
-    const std::string name = std::filesystem::path(input).filename().string();
     // (searched from behind each replacement: a bare name in the working
     // directory is its own replacement and would be found again forever)
+    const std::string name = std::filesystem::path(input).filename().string();
     if (!input.empty() && name != input)
       for (std::size_t pos = 0; (pos = message.find(input, pos)) != std::string::npos;
            pos += name.size())
@@ -122,15 +117,10 @@ main(int argc, char **argv)
         std::cerr << "Error: " << message << std::endl;
         return 1;
       }
-    // A check that every rank makes (the parameters, the setup, a
-    // divergence) fails on all ranks at once: rank 0 prints each distinct
-    // message once and all ranks end normally. A rank that fails alone
-    // while the others go on would leave them waiting in a collective: it
-    // prints its message and aborts the job.
     MPI_Request request;
     MPI_Ibarrier(error_comm, &request);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-    int        all = 0;
+    int        all      = 0;
     while (!all && std::chrono::steady_clock::now() < deadline)
       {
         MPI_Test(&request, &all, MPI_STATUS_IGNORE);
@@ -149,41 +139,96 @@ main(int argc, char **argv)
           std::cerr << (r > 0 ? "[rank " + std::to_string(r) + "] " : std::string())
                     << "Error: " << messages[r] << std::endl;
     return 1;
-  };
+  }
 
+
+
+  /** A deal.II exception's message without print_info()'s indentation and
+   *  blank lines. */
+  std::string
+  compact_message(const dealii::ExceptionBase &e)
+  {
+    std::ostringstream info;
+    e.print_info(info);
+    std::string        compact;
+    std::istringstream lines(info.str());
+    for (std::string line; std::getline(lines, line);)
+      {
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos)
+          continue;
+        compact += (compact.empty() ? "" : "\n  ") + line.substr(first);
+      }
+    return compact.empty() ? std::string(e.get_exc_name()) : compact;
+  }
+
+
+
+  /** What the command line asks for: the help text, the usage after an
+   *  error in it, or the case. Returns the exit status. */
+  int
+  run_command_line(const CommandLine &command_line, const MPI_Comm comm)
+  {
+    using namespace dealii;
+    const unsigned int    rank = Utilities::MPI::this_mpi_process(comm);
+    ParameterHandler      prm;
+    WheelRail::Parameters parameters;
+    WheelRail::Parameters::declare_parameters(prm);
+    if (command_line.help)
+      {
+        if (rank == 0)
+          {
+            print_usage(std::cout);
+            std::cout << "\nParameters (defaults shown):\n\n";
+            prm.print_parameters(std::cout, ParameterHandler::Text);
+          }
+        return 0;
+      }
+    if (!command_line.error.empty())
+      {
+        if (rank == 0)
+          {
+            std::cerr << "Error: " << WheelRail::ParameterFile::printable(command_line.error)
+                      << "\n\n";
+            print_usage(std::cerr);
+          }
+        return 1;
+      }
+    parameters.parse(prm, command_line.input);
+    if (command_line.resume)
+      parameters.output.resume = true;
+    WheelRail::Simulator simulator(parameters, prm, comm);
+    simulator.run();
+    // in test mode a check that said "no" fails the run
+    WheelRail::Verification::check_verdicts(parameters, comm);
+    return 0;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const MPI_Comm                           comm = MPI_COMM_WORLD;
+
+  // SIGTERM and SIGINT from here on stop the run cleanly (stop_signal.h)
+  WheelRail::StopSignal::install();
+
+  const CommandLine command_line = read_command_line(argc, argv);
+  MPI_Comm          error_comm;
+  MPI_Comm_dup(comm, &error_comm);
+  const std::unique_ptr<MPI_Comm, void (*)(MPI_Comm *)> free_error_comm(&error_comm,
+                                                                        [](MPI_Comm *c) {
+                                                                          MPI_Comm_free(c);
+                                                                        });
+  const auto fail = [&](const std::string &message) {
+    return report_failure(message, command_line.input, comm, error_comm);
+  };
   try
     {
-      ParameterHandler      prm;
-      WheelRail::Parameters parameters;
-      WheelRail::Parameters::declare_parameters(prm);
-
-      if (command_line.help)
-        {
-          if (rank == 0)
-            {
-              print_usage(std::cout);
-              std::cout << "\nParameters (defaults shown):\n\n";
-              prm.print_parameters(std::cout, ParameterHandler::Text);
-            }
-          return 0;
-        }
-      if (!command_line.error.empty())
-        {
-          if (rank == 0)
-            {
-              std::cerr << "Error: " << WheelRail::ParameterFile::printable(command_line.error)
-                        << "\n\n";
-              print_usage(std::cerr);
-            }
-          return 1;
-        }
-      parameters.parse(prm, input);
-      if (command_line.resume)
-        parameters.output.resume = true;
-      WheelRail::Simulator simulator(parameters, prm, comm);
-      simulator.run();
-      // in test mode a check that said "no" fails the run
-      WheelRail::Verification::check_verdicts(parameters, comm);
+      return run_command_line(command_line, comm);
     }
   catch (const WheelRail::StopSignal::Stopped &e)
     {
@@ -192,22 +237,9 @@ main(int argc, char **argv)
       fail(e.what());
       return 128 + e.signal();
     }
-  catch (const ExceptionBase &e)
+  catch (const dealii::ExceptionBase &e)
     {
-      std::ostringstream info;
-      e.print_info(info);
-      std::string text = info.str();
-      // print_info indents every line; keep the message compact
-      std::string        compact;
-      std::istringstream lines(text);
-      for (std::string line; std::getline(lines, line);)
-        {
-          const auto first = line.find_first_not_of(" \t");
-          if (first == std::string::npos)
-            continue;
-          compact += (compact.empty() ? "" : "\n  ") + line.substr(first);
-        }
-      return fail(compact.empty() ? std::string(e.get_exc_name()) : compact);
+      return fail(compact_message(e));
     }
   catch (const std::exception &e)
     {
@@ -217,5 +249,4 @@ main(int argc, char **argv)
     {
       return fail("unknown exception");
     }
-  return 0;
 }

@@ -24,9 +24,22 @@ namespace WheelRail
 
 
 
-  Statistics::Statistics(const SimulatorAccess &access, const EnergyBalance &balance)
+  void
+  StatisticsTable::add_number(const std::string &key, const double value)
+  {
+    add_value(key, value);
+    set_scientific(key, true);
+    set_precision(key, 8);
+  }
+
+
+
+  Statistics::Statistics(const SimulatorAccess                    &access,
+                         const EnergyBalance                      &balance,
+                         const std::vector<const Postprocessor *> &selected)
     : access(access)
     , balance(balance)
+    , selected(selected)
   {}
 
 
@@ -47,9 +60,7 @@ namespace WheelRail
   Statistics::add_row(const Energies &e)
   {
     const auto add = [&](const std::string &key, const double value) {
-      table.add_value(key, value);
-      table.set_scientific(key, true);
-      table.set_precision(key, 8);
+      table.add_number(key, value);
     };
     table.add_value("step", static_cast<unsigned int>(e.step));
     add("time [s]", e.time);
@@ -94,6 +105,8 @@ namespace WheelRail
     add("external work [J]", e.external_work);
     add("balance [J]", balance.balance());
     add("balance error [-]", balance.balance_error());
+    for (const Postprocessor *postprocessor : selected)
+      postprocessor->add_statistics(table);
   }
 
 

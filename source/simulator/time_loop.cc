@@ -102,15 +102,24 @@ namespace WheelRail
     probes        = add(std::make_unique<Probes>(*access));
     contact_patch = add(std::make_unique<ContactPatch>(*access));
     add(std::make_unique<PatchSeries>(*access));
+    // those Output/Postprocessors selects, before the statistics that
+    // take their columns
+    std::vector<Postprocessor *> selected;
+    for (const auto &[name, factory] : parameters.output.postprocessors)
+      selected.push_back(add(factory(*access)));
     divergence =
       add(std::make_unique<DivergenceCheck>(*access, *energy_balance, [this] { write_records(); }));
     add(std::move(balance));
-    statistics = add(std::make_unique<Statistics>(*access, *energy_balance));
+    statistics = add(std::make_unique<Statistics>(
+      *access,
+      *energy_balance,
+      std::vector<const Postprocessor *>(selected.begin(), selected.end())));
     samples    = add(std::make_unique<SampleRecorder>(*access));
     vtu        = add(std::make_unique<VtuOutput>(*access));
     // the order of the checkpoint format (a checkpoint of an earlier run
-    // resumes only in this order)
+    // resumes only in this order), then the selected ones in their order
     checkpointed = {statistics, vtu, probes, contact_patch, energy_balance, samples, divergence};
+    checkpointed.insert(checkpointed.end(), selected.begin(), selected.end());
   }
 
 

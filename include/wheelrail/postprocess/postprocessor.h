@@ -66,9 +66,12 @@ namespace WheelRail
     bool            report_step; ///< a step of Output/Report interval
   };
 
+  class StatisticsTable;
+
   /**
    * One postprocessor: records after each step what it needs, writes its
-   * files, and saves and restores its state with the checkpoint.
+   * files, adds its columns to the statistics, and saves and restores its
+   * state with the checkpoint.
    */
   class Postprocessor
   {
@@ -84,6 +87,15 @@ namespace WheelRail
     virtual void
     write_files() const
     {}
+
+    /** At a statistics step, after execute(): add this postprocessor's
+     *  columns to the row of @p table (StatisticsTable::add_number());
+     *  most have none. */
+    virtual void
+    add_statistics(StatisticsTable &table) const
+    {
+      (void)table;
+    }
 
     /** The state for the checkpoint: both call the same
      *  serialize(Archive &), which lists the fields once. */

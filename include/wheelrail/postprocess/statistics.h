@@ -29,14 +29,22 @@ namespace WheelRail
     /** The values of column @p key, one per row. */
     std::vector<double>
     values(const std::string &key) const;
+
+    /** Add @p value to column @p key of the current row, written with 8
+     *  significant digits. */
+    void
+    add_number(const std::string &key, const double value);
   };
 
-  /** The statistics table; the balance columns come from @p balance, which
-   *  must have executed the same step before. */
+  /** The statistics table; the balance columns come from @p balance, and
+   *  then the columns of each of @p selected, which must have executed
+   *  the same step before. */
   class Statistics : public Postprocessor
   {
   public:
-    Statistics(const SimulatorAccess &access, const EnergyBalance &balance);
+    Statistics(const SimulatorAccess                  &access,
+               const EnergyBalance                    &balance,
+               const std::vector<const Postprocessor *> &selected = {});
 
     /** At a statistics step: add the row; at a report step also write the
      *  file. */
@@ -67,8 +75,9 @@ namespace WheelRail
     add_row(const Energies &e);
 
     const SimulatorAccess &access;
-    const EnergyBalance   &balance;
-    StatisticsTable        table;
+    const EnergyBalance                     &balance;
+    const std::vector<const Postprocessor *> selected;
+    StatisticsTable                          table;
   };
 } // namespace WheelRail
 
