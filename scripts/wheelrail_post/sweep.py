@@ -45,16 +45,16 @@ import subprocess
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import hs_compare as hc  # noqa: E402  (scripts/hs_compare.py: readers, the half-space)
-import plot  # noqa: E402  (scripts/plot.py: the figure check)
-
-import matplotlib  # noqa: E402
+import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-import atomic_file  # scripts/atomic_file.py
+
+from . import SCRIPTS_DIR  # noqa: E402
+from . import atomic_file  # noqa: E402
+from . import compare as hc  # noqa: E402  (readers, the half-space)
+from . import plots as plot  # noqa: E402  (the figure check)
 
 LAWS = {
     "constant": {"Friction law": "constant", "Static friction coefficient": "0.5"},
@@ -184,7 +184,7 @@ def main():
     parser.add_argument("--laws", default="constant,exponential", help="friction laws")
     parser.add_argument("--np", type=int, default=1, help="MPI ranks per run")
     parser.add_argument("--out", default="results/sweep", help="sweep directory")
-    parser.add_argument("--wheelrail", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+    parser.add_argument("--wheelrail", default=os.path.join(SCRIPTS_DIR,
                                                             "..", "build", "wheelrail"))
     parser.add_argument("--hs-grid", default="%dx%d" % hc.DEFAULT_GRID,
                         help="half-space elements NXxNY of the creep curve (NY odd)")
@@ -302,6 +302,3 @@ def main():
         rep.exit_with_check([] if plot.shows_half_space(rep, "creep_curve.png")
                             else ["creep_curve.png: no half-space curve"])
 
-
-if __name__ == "__main__":
-    main()

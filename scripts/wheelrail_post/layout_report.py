@@ -12,9 +12,10 @@ opening brace on a line of its own at the indentation of the function's name
 import argparse
 import os
 import re
-import sys
 
-TOP = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from . import SCRIPTS_DIR
+
+TOP = os.path.dirname(SCRIPTS_DIR)
 NOT_FUNCTIONS = re.compile(r"^(class|struct|union|enum|namespace|extern|template\s*<[^>]*>\s*(class|struct))\b")
 NAME = re.compile(r"([A-Za-z_][A-Za-z_0-9]*(::[A-Za-z_~][A-Za-z_0-9]*)*(<[^()]*>)?)\s*\(")
 
@@ -90,6 +91,3 @@ def main():
         print("%-*s %6d  (%d files)" % (width, "total", total, len(rows)))
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main())

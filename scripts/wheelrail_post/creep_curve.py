@@ -62,18 +62,18 @@ import shutil
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import hs_compare as hc  # noqa: E402  (scripts/hs_compare.py: readers, the half-space)
-import plot  # noqa: E402  (scripts/plot.py: Report, the figure check)
-import sweep  # noqa: E402  (scripts/sweep.py: running a case)
-
-import h5py  # noqa: E402
-import matplotlib  # noqa: E402
+import h5py
+import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-import atomic_file  # scripts/atomic_file.py
+
+from . import SCRIPTS_DIR  # noqa: E402
+from . import atomic_file  # noqa: E402
+from . import compare as hc  # noqa: E402  (readers, the half-space)
+from . import plots as plot  # noqa: E402  (Report, the figure check)
+from . import sweep  # noqa: E402  (running a case)
 
 # (column, unit, description) of the table, in order
 COLUMNS = [
@@ -278,7 +278,7 @@ def main():
     parser.add_argument("--runup-damping", type=float, default=8000.,
                         help="damping of the wheel's rigid motion [1/s]; 0 keeps the case's")
     parser.add_argument("--hs-grid", default="48x33", help="half-space elements NXxNY (NY odd)")
-    parser.add_argument("--wheelrail", default=os.path.join(os.path.dirname(os.path.abspath(__file__)),
+    parser.add_argument("--wheelrail", default=os.path.join(SCRIPTS_DIR,
                                                             "..", "build", "wheelrail"))
     parser.add_argument("--solve-each-static-start", action="store_true",
                         help="every run solves its static start (default: the first run solves it, "
@@ -379,6 +379,3 @@ def main():
     if args.check:
         check(rep, csv_path, h5_path, rows)
 
-
-if __name__ == "__main__":
-    main()

@@ -49,13 +49,11 @@ Usage:
 """
 import argparse
 import os
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import convergence_study as cs  # noqa: E402  (variants: parsing and running)
-import hs_compare as hc  # noqa: E402  (the run's files and the half-space comparison)
+from . import convergence_study as cs  # variants: parsing and running
+from . import compare as hc  # the run's files and the half-space comparison
 
 PAPER_SAMPLING = 175e3  # Hz, the paper's output rate
 EQ6_THRESHOLD = 0.05  # m/s, eq. 6's slip: s_n above it (NodalContact::slip_velocity_threshold)
@@ -376,6 +374,3 @@ def main():
         if not passed:
             raise SystemExit("friction_study.py: a limit is exceeded")
 
-
-if __name__ == "__main__":
-    main()

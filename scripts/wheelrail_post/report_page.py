@@ -19,8 +19,8 @@ import time
 
 import numpy as np
 
-import hs_compare as hc  # scripts/hs_compare.py: the ellipse fit
-import atomic_file  # scripts/atomic_file.py
+from . import compare as hc  # the ellipse fit
+from . import atomic_file
 
 STYLE = """
 body { font-family: sans-serif; max-width: 1100px; margin: 1.5em auto; color: #222; line-height: 1.4; }

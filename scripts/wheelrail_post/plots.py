@@ -51,12 +51,11 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-# scripts/hs_compare.py: the run's files by column name, the half-space comparison
-import hs_compare as hc  # noqa: E402
-import report_page  # noqa: E402  (scripts/report_page.py: the report page)
-from hs_compare import axis_rows, column, read_parameters, read_patch, read_statistics  # noqa: E402
-import atomic_file  # scripts/atomic_file.py
+# compare: the run's files by column name, the half-space comparison
+from . import compare as hc  # noqa: E402
+from . import report_page  # noqa: E402
+from .compare import axis_rows, column, read_parameters, read_patch, read_statistics  # noqa: E402
+from . import atomic_file  # noqa: E402
 
 INSTANTS = ["t-5.7us", "t", "t+5.7us"]
 
@@ -460,6 +459,3 @@ def main():
                          if n in made and not shows_half_space(rep, n)]
         rep.exit_with_check(problems)
 
-
-if __name__ == "__main__":
-    main()

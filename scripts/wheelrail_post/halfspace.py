@@ -29,11 +29,10 @@ import os
 import sys
 import time
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import numpy as np  # noqa: E402
+import numpy as np
 
-import halfspace_bem as bem  # noqa: E402
-import atomic_file  # scripts/atomic_file.py
+from . import atomic_file
+from . import bem
 
 SPEC = dict(load=140.3e3, rx=0.46, ry=0.30, E=2.1e11, nu=0.3, speed=38.89,
             f=0.5, f_s=0.5, f_d=0.32, k=6.0)
@@ -487,6 +486,3 @@ def main(argv):
         print("halfspace.py: error: %s; nothing written" % e, file=sys.stderr)
         return 3
 
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

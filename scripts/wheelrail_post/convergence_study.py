@@ -48,13 +48,12 @@ Coulomb friction only (constant f, read from each run's parameters.prm).
 import argparse
 import os
 import subprocess
-import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-# scripts/hs_compare.py: the run's files and the half-space comparison of its patch
-import hs_compare as hc  # noqa: E402
+from . import SCRIPTS_DIR
+# compare: the run's files and the half-space comparison of its patch
+from . import compare as hc
 
 DEFAULT_VARIANTS = ["h1.32:0.00132:2.6e-8", "h0.66:0.00066:2.6e-8",
                     "h0.66-dt/2:0.00066:1.3e-8", "h0.33:0.00033:2.6e-8"]
@@ -160,7 +159,7 @@ def prm_entry(path, value):
 
 def run_variants(args, variants):
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    binary = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "wheelrail")
+    binary = os.path.join(SCRIPTS_DIR, "..", "build", "wheelrail")
     for label, h, dt, xi0, sets in variants:
         out = os.path.abspath(os.path.join(args.work, label))
         if os.path.exists(os.path.join(out, "patch_t.csv")):
@@ -336,6 +335,3 @@ def creep_figure(results, path, grid):
     fig.savefig(path, dpi=120)
     print(f"wrote {path}")
 
-
-if __name__ == "__main__":
-    main()
