@@ -5,7 +5,7 @@ Runs (or reads) wheelrail results of one rolling case at several minimum cell
 sizes h and time steps, and compares each run's contact patch at instant t
 (patch_t.csv) with Hertz and with the half-space solution of the same normal
 and longitudinal force (Kalker's exact theory of steady rolling, by
-scripts/hs_compare.py, which plot.py uses too):
+scripts/wheelrail_post/compare.py, which plot.py uses too):
 
   p0, a, b     Hertzian ellipse p^2 = p0^2 (1 - x^2/a^2 - y^2/b^2) fitted to the
                rail-node pressures above 25 % of the largest (as the program's

@@ -25,7 +25,7 @@ and reports for each run:
                  y = 0 at t
   half-space     Kalker's steady rolling solution with the same law (its
                  friction state included) at the patch's own F_N and F_x
-                 (scripts/hs_compare.py): its slip-area fraction and mean
+                 (scripts/wheelrail_post/compare.py): its slip-area fraction and mean
                  trailing slip velocity along y = 0, and the RMS difference of
                  the shear along y = 0 over f_S p0, at t and of the window means
   spectra        RMS velocity of the wheel node that passes O (wheel_probe.csv)

@@ -2,7 +2,7 @@
 """Half-space reference of the wheel-rail contact patch (Kalker's exact theory).
 
 Solves the Hertzian wheel-rail case of SPEC 8 on a grid of rectangles (the
-numerics are in scripts/halfspace_bem.py): the normal problem at a given load,
+numerics are in scripts/wheelrail_post/bem.py): the normal problem at a given load,
 then steady rolling at a given longitudinal creepage or longitudinal force,
 with Coulomb friction or the exponential law of SPEC 4, and writes
 

@@ -29,7 +29,7 @@ paper's figures made from the run (Zhao & Li 2016, section 3):
                                p, q_x [Pa], |s| [m/s], in_contact
 
 The half-space solution (Kalker's exact steady rolling theory,
-scripts/halfspace.py via scripts/hs_compare.py) is solved at the F_N and F_x
+scripts/halfspace.py via scripts/wheelrail_post/compare.py) is solved at the F_N and F_x
 of the patch at t on a grid of --hs-grid elements (0x0: none); the RMS
 differences along y = 0 (pressure over p0, shear_x over f p0) and the
 slip-area fractions of FE and half-space are printed and listed in

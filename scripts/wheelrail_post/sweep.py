@@ -25,7 +25,7 @@ removed after the runs) unless --solve-each-static-start. Then DIR holds:
                             xi, each run's mean mu_a against its mean
                             creepage (statistics, second half) beside the
                             half-space curve of each law (Kalker's exact
-                            steady rolling theory, scripts/hs_compare.py, at
+                            steady rolling theory, scripts/wheelrail_post/compare.py, at
                             the runs' mean F_N, on --hs-grid elements)
   creep_curve.csv           its data: source (FE or half-space), law, mu_n,
                             creepage, Fx_over_Fn, and the half-space

@@ -31,10 +31,9 @@ subsection Contact
 end
 PRM
 "$exe" case.prm > wheelrail.log
-/usr/bin/python3 - "$src/scripts" <<'PY'
+PYTHONPATH="$src/scripts" /usr/bin/python3 - <<'PY'
 import sys
-sys.path.insert(0, sys.argv[1])
-import hs_compare as h
+from wheelrail_post import compare as h
 r = h.compare_patch("out", grid=(32, 17))
 s = h.slip_halves("out", r)
 print("\n".join(h.summary_lines(r)))
