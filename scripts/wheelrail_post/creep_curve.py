@@ -13,7 +13,7 @@ creepage xi the case is run with the creepage held for the whole run
 coefficient = 0; the wheel's angular velocity is held at V (1 - xi) / r) and,
 unless --runup-damping 0, with the wheel's rigid motion on its web damped at
 ALPHA [1/s] (Run-up damping shape = wheel rigid motion, default 8000 1/s,
-about critical for the wheel's 680 Hz torsional mode; doc/convergence.md):
+about critical for the wheel's 680 Hz torsional mode; doc/notes/convergence.md):
 that is what makes the traction steady within a few tens of mm of rolling. A
 torque-driven case needs the wheelset's spin-up (a lag of about 1 ms) and its
 torsional vibration to die out first, which takes longer than the runs last.

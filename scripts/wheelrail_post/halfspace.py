@@ -21,7 +21,7 @@ relative to the rail surface, s = V (xi - du_x/dx) in x.
 
 --check NAME runs a verification (fixed settings, independent of the other
 options) and exits with status 1 if it fails: hertz, carter, c11, fullslip,
-exponential, memory (the relaxing friction state) or all. See doc/halfspace.md.
+exponential, memory (the relaxing friction state) or all. See doc/manual/halfspace.md.
 """
 import argparse
 import math

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ctest driver: the paper's settings on the quick mesh (prm/quick_paper_settings.prm: exponential law, mu_n = 0.3, h 1.5 mm)
-# with the regularised friction of doc/friction_regularisation.md
+# with the regularised friction of doc/notes/friction_regularisation.md
 # (Slip rate = irreversible, Friction relaxation length = 10 um). Its patch
 # at instant t must have what steady rolling theory has and the paper's
 # instantaneous law does not (eq. 6 slips 92 % of the leading half there):
