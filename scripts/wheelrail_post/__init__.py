@@ -4,8 +4,10 @@ figures and report pages, the sweeps and studies. One module per job:
     atomic_file        writing a file under a temporary name, then renaming it
     bem                half-space numerics: Hertz, influence coefficients, the
                        normal solver, Kalker's TANG, friction laws
-    halfspace          the half-space reference: cases, rolling, its checks and
-                       command line (scripts/halfspace.py)
+    halfspace          the half-space reference: the cases (elliptic, line),
+                       the rolling solve at a creepage or force, the fields
+    halfspace_checks   its verification checks (halfspace.py --check NAME)
+    halfspace_cli      its command line (scripts/halfspace.py)
     compare            a run's files by column name; its patch against the
                        half-space solution at the patch's own load and traction
     report_page        the self-contained report.html

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """A wheelrail run's output read by column name, and its contact patch
 compared with the half-space solution (scripts/halfspace.py, Kalker's exact
 theory of steady rolling) of the same load and traction.

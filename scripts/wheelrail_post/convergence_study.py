@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Mesh and time-step convergence of a rolling case against exact theory.
 
 Runs (or reads) wheelrail results of one rolling case at several minimum cell

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Creep-force table of a wheelrail case: F_x / F_N against the longitudinal creepage.
 
 Usage:

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Velocity-dependent friction: convergence and comparison with exact theory.
 
 Issue 25, items 3 and 4. Runs (or reads) wheelrail results of one rolling

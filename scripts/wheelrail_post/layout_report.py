@@ -1,4 +1,3 @@
-#!/usr/bin/env python3
 """The code layout as a table: every C++ file under source/, include/ and
 tests/ with its line count and its largest function (name and lines).
 

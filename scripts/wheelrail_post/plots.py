@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Plots and a report page from a wheelrail run's output directory.
 
 Usage:

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The report page of a wheelrail run (plots/report.html) and its HTML frame.
 
 page()        a self-contained HTML page: a style sheet, the sections given and

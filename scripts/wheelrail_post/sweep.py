@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Run a traction sweep of wheelrail cases and plot it (paper Figs. 14, 15).
 
 Usage:
