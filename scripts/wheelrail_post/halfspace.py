@@ -4,7 +4,8 @@ the cases and the solve.
 The Hertzian wheel-rail case of SPEC 8 on a grid of rectangles: the normal
 problem at a given load (elliptic_case, or line_case for Carter's strip), then
 steady rolling at a given creepage or longitudinal force (rolling) with
-Coulomb friction or the exponential law (make_law), and the per-element fields.
+Coulomb friction or the exponential law (make_law), the per-element fields and
+CSV files of them (write_csv).
 The numerics are in bem.py, the verification checks in halfspace_checks.py,
 the command line (scripts/halfspace.py) in halfspace_cli.py. Signs and
 conventions: halfspace_cli.py's docstring, doc/manual/halfspace.md.
@@ -13,6 +14,7 @@ import math
 
 import numpy as np
 
+from . import atomic_file
 from . import bem
 
 SPEC = dict(load=140.3e3, rx=0.46, ry=0.30, E=2.1e11, nu=0.3, speed=38.89,
@@ -88,3 +90,10 @@ def fields(grid, p, sol, speed):
     smag = np.hypot(s[0], sy)
     return dict(p=p, q_x=q[0], q_y=qy, s_x=s[0], s_y=sy, s=smag, f=sol["f"],
                 state=state)
+
+
+def write_csv(path, header, rows):
+    with atomic_file.replacing(path) as tmp, open(tmp, "w") as out:
+        out.write(",".join(header) + "\n")
+        for r in rows:
+            out.write(",".join(v if isinstance(v, str) else "%.9g" % v for v in r) + "\n")

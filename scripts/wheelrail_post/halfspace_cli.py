@@ -30,18 +30,10 @@ import time
 
 import numpy as np
 
-from . import atomic_file
 from . import bem
 from .halfspace import (SPEC, InputError, elliptic_case, fields, line_case, make_law, moduli,
-                        rolling, semi_axes)
+                        rolling, semi_axes, write_csv)
 from .halfspace_checks import CHECKS
-
-
-def write_csv(path, header, rows):
-    with atomic_file.replacing(path) as tmp, open(tmp, "w") as out:
-        out.write(",".join(header) + "\n")
-        for r in rows:
-            out.write(",".join(v if isinstance(v, str) else "%.9g" % v for v in r) + "\n")
 
 
 def run(args):
