@@ -1,6 +1,6 @@
 // Unit test of the limits that a rolling patch at t is judged by
 // (verification/expected_errors.h): at the convergence study's own mesh
-// sizes the expectation is the measured error of doc/convergence.md, the
+// sizes the expectation is the measured error of doc/notes/convergence.md, the
 // limit max(target, 4/3 x expected); between them linear in h; below the
 // paper's h the paper mesh's; beyond 2 x 1.32 mm only the target. An error
 // just inside a limit reads "as expected", just outside "OUTSIDE": a wrong

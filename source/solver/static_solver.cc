@@ -100,7 +100,7 @@ namespace WheelRail
     amg_data.elliptic              = true;
     amg_data.higher_order_elements = false;
     // Chebyshev of degree 1: more CG iterations than degree 2 but fewer
-    // products with K in all (doc/performance_update.md)
+    // products with K in all (doc/notes/performance_update.md)
     amg_data.smoother_sweeps = 1;
     if (parameters.statics.amg_null_space == "translations")
       {

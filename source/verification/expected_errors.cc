@@ -24,7 +24,7 @@ namespace WheelRail
     const std::vector<ExpectedError> &
     expected_errors()
     {
-      // doc/convergence.md, "Convergence at F_x / F_N = 0.3": Coulomb f = 0.5,
+      // doc/notes/convergence.md, "Convergence at F_x / F_N = 0.3": Coulomb f = 0.5,
       // creepage held at -2.93e-3, paper step, half-space on 96 x 65
       // elements; runs of 2026-11-25 (h 1.32, 0.66, 0.33 mm)
       static const std::vector<ExpectedError> table = {

@@ -6,7 +6,7 @@
 # the paper's step, then scripts/convergence_study.py --check on its patch at
 # instant t against Hertz and the half-space solution at the run's own F_N
 # and F_x. The limits are what this mesh resolves, set with a margin of
-# about a third (doc/convergence.md gives the figures at h 1.32, 0.66 and
+# about a third (doc/notes/convergence.md gives the figures at h 1.32, 0.66 and
 # 0.33 mm). Measured at ee8f93a (2026-11-27): p0 0.037, a 0.002, b 0.000,
 # creep 0.022, slip 0.048, rms_p 0.029, rms_q 0.034, spread 0.017. At
 # 525d133 (2026-11-25) slip was 0.039, spread 0.014. The slip error moved
@@ -24,7 +24,7 @@
 # stick: the slip-zone nodes' mean adhesion share over the 5.7 us window,
 # 0.000 with the paper cases' Contact damping 0.2, 0.019 without it (the
 # nodes ringing on their penalty springs stick in part of the steps;
-# doc/interface.md).
+# doc/notes/interface.md).
 # Arguments: the wheelrail executable, the source directory.
 set -euo pipefail
 exec bash "$(dirname "$0")/coulomb_check.sh" "$1" "$2" prm/compare_coulomb.prm \

@@ -10,7 +10,7 @@
 # compare_coulomb_01 where its measured values fit them; slip and stick have
 # their own, set with a margin of a third when this case's were larger than
 # the shortened case's (at 525d133: slip 0.050 against 0.039, stick 0.023
-# against 0.000; not explained, doc/convergence.md). Measured at ee8f93a
+# against 0.000; not explained, doc/notes/convergence.md). Measured at ee8f93a
 # (2026-11-27): p0 0.037, a 0.002, b 0.000, creep 0.016, slip 0.042, rms_p
 # 0.030, rms_q 0.037, spread 0.008, stick 0.020 (the shortened case: slip
 # 0.048, stick 0.000).

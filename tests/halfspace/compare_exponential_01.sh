@@ -7,7 +7,7 @@
 # scripts/friction_study.py --check on its patch at instant t against the
 # half-space solution of the same law, state relaxation included, at the
 # run's own F_N and F_x. The limits are what this mesh resolves, with a
-# margin of about a third (doc/friction_regularisation.md gives the figures
+# margin of about a third (doc/notes/friction_regularisation.md gives the figures
 # at h 1.32, 0.66 and 0.33 mm; the paper's instantaneous law fails all but
 # the shear check there). The trailing s_n is checked at t: its mean over the
 # patch averaging window, a mean of magnitudes, is raised by the slip zone's

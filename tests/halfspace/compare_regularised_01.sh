@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ctest driver: the paper's settings on the quick mesh (prm/quick_paper_settings.prm: exponential law, mu_n = 0.3, h 1.5 mm)
-# with the regularised friction of doc/friction_regularisation.md
+# with the regularised friction of doc/notes/friction_regularisation.md
 # (Slip rate = irreversible, Friction relaxation length = 10 um). Its patch
 # at instant t must have what steady rolling theory has and the paper's
 # instantaneous law does not (eq. 6 slips 92 % of the leading half there):
@@ -31,10 +31,9 @@ subsection Contact
 end
 PRM
 "$exe" case.prm > wheelrail.log
-/usr/bin/python3 - "$src/scripts" <<'PY'
+PYTHONPATH="$src/scripts" /usr/bin/python3 - <<'PY'
 import sys
-sys.path.insert(0, sys.argv[1])
-import hs_compare as h
+from wheelrail_post import compare as h
 r = h.compare_patch("out", grid=(32, 17))
 s = h.slip_halves("out", r)
 print("\n".join(h.summary_lines(r)))

@@ -8,7 +8,7 @@
 # - the creepages found: the half-space curve at them gives the levels;
 # - each FE row against the half-space solution at its own creepage: this
 #   mesh transmits about 2 % less F_x than the half-space at a held creepage
-#   (compare_coulomb_01; doc/convergence.md), limit 3 %; slip-area fraction
+#   (compare_coulomb_01; doc/notes/convergence.md), limit 3 %; slip-area fraction
 #   within 0.05;
 # - the metadata: the static wheel load (14,300 kg x 9.81 m/s^2), the radii,
 #   the law.

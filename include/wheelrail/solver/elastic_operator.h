@@ -280,7 +280,7 @@ namespace WheelRail
     static void
     prefetch_block(const double *block, const unsigned int size);
     /** Batches ahead of the one computed that prefetch_block() requests
-     *  (bench of 2026-11-25, doc/performance.md: 4 or 6 batches are within
+     *  (bench of 2026-11-25, doc/notes/performance.md: 4 or 6 batches are within
      *  the noise of 2, none requested is 60 % slower). */
     static constexpr unsigned int prefetch_distance = 2;
     /** Request u, v (with damping) and f of the nodes of @p batch into the
@@ -292,7 +292,7 @@ namespace WheelRail
                    const double      *F,
                    const bool         with_damping) const;
     /** Batches ahead of the one computed whose nodal values
-     *  prefetch_nodes() requests (doc/performance.md, 2026-11-26). */
+     *  prefetch_nodes() requests (doc/notes/performance.md, 2026-11-26). */
     static constexpr unsigned int node_prefetch_distance = 4;
 
     FESystem<dim>             fe;

@@ -129,7 +129,7 @@ namespace WheelRail
      *  half-width conversions, an extract and an insert (of 2 floats: two
      *  scalar conversions and an unpack); with the split the damped
      *  single-geometry kernel took 12-14 % longer on AVX-512
-     *  (doc/performance_kernel.md). The masked form of the 8-lane
+     *  (doc/notes/performance_kernel.md). The masked form of the 8-lane
      *  intrinsic, all lanes set, is the same instruction; the plain one's
      *  undefined source trips -Wmaybe-uninitialized in GCC 12. */
     template <typename V>
@@ -217,7 +217,7 @@ namespace WheelRail
      * a strain of order |U| |b| 6e-8 (1e-5 for the wheel after 150 mm of
      * rolling); the gradient is therefore summed over u_a - u_0, which is
      * the same sum for exact b_a and leaves only the rounding of the
-     * deformation and rotation within the cell (doc/performance.md).
+     * deformation and rotation within the cell (doc/notes/performance.md).
      */
     template <typename V = kernel_vector>
     struct SingleData

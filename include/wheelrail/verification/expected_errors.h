@@ -1,7 +1,7 @@
 /**
  * @file verification/expected_errors.h
  * What the convergence study of the rolling contact patch
- * (doc/convergence.md) measured at each mesh size h, and the limits that a
+ * (doc/notes/convergence.md) measured at each mesh size h, and the limits that a
  * run's patch at instant t is judged by: a correct run on a coarse mesh
  * carries the discretisation error of its h, a wrong one exceeds it.
  */
@@ -42,7 +42,7 @@ namespace WheelRail
      *  the sampling instant. */
     constexpr double expected_error_margin = 4. / 3.;
 
-    /** The study's quantities (doc/convergence.md, table "Convergence at
+    /** The study's quantities (doc/notes/convergence.md, table "Convergence at
      *  F_x / F_N = 0.3", shipped settings). */
     const std::vector<ExpectedError> &
     expected_errors();

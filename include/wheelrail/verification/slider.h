@@ -7,7 +7,7 @@
  * the FE program; its steady sliding and the linear stability of that state
  * are known in closed form, so the growth or decay of a perturbation the
  * explicit run shows can be checked against theory for each slip-rate and
- * friction option (doc/friction_regularisation.md).
+ * friction option (doc/notes/friction_regularisation.md).
  */
 #ifndef wheelrail_verification_slider_h
 #define wheelrail_verification_slider_h

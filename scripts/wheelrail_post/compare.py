@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """A wheelrail run's output read by column name, and its contact patch
 compared with the half-space solution (scripts/halfspace.py, Kalker's exact
 theory of steady rolling) of the same load and traction.
@@ -32,13 +31,11 @@ rigid creepage at the patch's instant. Both are said in the result's 'note'.
 """
 import math
 import os
-import sys
 import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import halfspace as hs  # noqa: E402
+from . import halfspace as hs
 
 # the grid of the comparisons: elements along x and y (odd: a row on y = 0)
 # over 1.1 x the Hertz semi-axes

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """The report page of a wheelrail run (plots/report.html) and its HTML frame.
 
 page()        a self-contained HTML page: a style sheet, the sections given and
@@ -7,7 +6,7 @@ page()        a self-contained HTML page: a style sheet, the sections given and
               page has loaded, which the headless-browser test reads
 run_report()  the run's page: what was run; its key figures against Hertz and
               the half-space solution with a verdict per line against the
-              limits of doc/convergence.md; the notes on what to trust that
+              limits of doc/notes/convergence.md; the notes on what to trust that
               apply to its settings; the figures with captions
 
 Used by scripts/plot.py (run reports) and scripts/sweep.py (sweep reports).
@@ -19,8 +18,8 @@ import time
 
 import numpy as np
 
-import hs_compare as hc  # scripts/hs_compare.py: the ellipse fit
-import atomic_file  # scripts/atomic_file.py
+from . import compare as hc  # the ellipse fit
+from . import atomic_file
 
 STYLE = """
 body { font-family: sans-serif; max-width: 1100px; margin: 1.5em auto; color: #222; line-height: 1.4; }
@@ -46,7 +45,7 @@ window.addEventListener('load', function () {
 });
 """
 # the limits of the verdicts where the run states no expectation of its own
-# (issue 24's targets, met on the paper mesh; doc/convergence.md)
+# (issue 24's targets, met on the paper mesh; doc/notes/convergence.md)
 LIMITS = dict(p0=0.02, a=0.02, b=0.02, rms_q=0.05, slip=0.03, creep=0.05, spread=0.01)
 
 
