@@ -162,8 +162,18 @@ def axis_rows(patch):
 
 
 def law_of(prm):
-    """(half-space law, its static coefficient, description) of a run."""
-    if prm["Contact/Friction law"] == "constant":
+    """(half-space law, its static coefficient, description) of a run.
+
+    The half-space reference has the library's laws, 'constant' and
+    'exponential'; a run with another law (a plugin, doc/developer.md) has
+    no reference here, and is refused rather than compared with the wrong
+    law."""
+    name = prm["Contact/Friction law"]
+    if name not in ("constant", "exponential"):
+        raise SystemExit("the half-space reference has no friction law '%s' (it has 'constant' and "
+                         "'exponential'): add it to wheelrail_post/bem.py and law_of() in "
+                         "wheelrail_post/compare.py to compare this run" % name)
+    if name == "constant":
         f = float(prm["Contact/Static friction coefficient"])
         return hs.make_law("coulomb", f, 0, 0, 0), f, "Coulomb f = %g" % f
     f_s = float(prm["Contact/Static friction coefficient"])
