@@ -170,7 +170,7 @@ def law_of(prm):
     law."""
     name = prm["Contact/Friction law"]
     if name not in ("constant", "exponential"):
-        raise SystemExit("the half-space reference has no friction law '%s' (it has 'constant' and "
+        raise ValueError("the half-space reference has no friction law '%s' (it has 'constant' and "
                          "'exponential'): add it to wheelrail_post/bem.py and law_of() in "
                          "wheelrail_post/compare.py to compare this run" % name)
     if name == "constant":
