@@ -169,6 +169,8 @@ def law_of(prm):
     no reference here, and is refused rather than compared with the wrong
     law."""
     name = prm["Contact/Friction law"]
+    if name == "none":
+        return hs.make_law("coulomb", 0, 0, 0, 0), 0, "frictionless"
     if name not in ("constant", "exponential"):
         raise ValueError("the half-space reference has no friction law '%s' (it has 'constant' and "
                          "'exponential'): add it to wheelrail_post/bem.py and law_of() in "
