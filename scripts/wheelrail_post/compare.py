@@ -170,7 +170,8 @@ def law_of(prm):
     law."""
     name = prm["Contact/Friction law"]
     if name == "none":
-        return hs.make_law("coulomb", 0, 0, 0, 0), 0, "frictionless"
+        raise ValueError("a frictionless run has no shear to compare with the rolling half-space "
+                         "solution")
     if name not in ("constant", "exponential"):
         raise ValueError("the half-space reference has no friction law '%s' (it has 'constant' and "
                          "'exponential'): add it to wheelrail_post/bem.py and law_of() in "
