@@ -129,6 +129,144 @@ namespace WheelRail
       {
         return std::string(prefix) + "xyz"[d];
       }
+
+
+
+      /** Refuses @p peak of @p entry = @p expression if it is not finite
+       *  (@p prefix names the component, @p unit its unit; @p over_run
+       *  says over which times it was sampled). */
+      void
+      check_finite(const std::string &entry,
+                   const std::string &expression,
+                   const Peak        &peak,
+                   const char        *prefix,
+                   const char        *unit,
+                   const std::string &over_run)
+      {
+        AssertThrow(std::isfinite(peak.magnitude),
+                    ExcMessage(entry + " = '" + expression + "' is not finite at t = " +
+                               fmt(peak.t) + " s (" + component_name(prefix, peak.component) +
+                               " = " + fmt(peak.value) + " " + unit + ")" + over_run +
+                               ": give an expression that stays finite over the whole run."));
+      }
+
+
+
+      /** Refuses an applied force that is not finite over the run or that
+       *  alone strains the bodies (of @p size, described by @p bodies)
+       *  beyond max_load_strain. */
+      void
+      check_applied_force(const Parameters  &p,
+                          const BodySize    &size,
+                          const std::string &over_run,
+                          const std::string &bodies)
+      {
+        const BoundaryParameters &b     = p.boundary;
+        const MaterialParameters &m     = p.material;
+        const std::string         entry = "Boundary conditions/Applied force";
+        const Peak                peak  = peak_over_run(p,
+                                        b.applied_force_expression,
+                                        b.applied_force_constants,
+                                        entry,
+                                        p.solver.end_time,
+                                        false);
+        check_finite(entry, b.applied_force_expression, peak, "F", "N", over_run);
+        const double strain = peak.magnitude / (m.youngs_modulus * size.cross_section());
+        AssertThrow(strain <= max_load_strain,
+                    ExcMessage(entry + " = '" + b.applied_force_expression + "' reaches " +
+                               fmt(peak.magnitude, 3) + " N at t = " + fmt(peak.t) + " s" +
+                               over_run + ": on " + bodies +
+                               " the force alone gives a strain of about " + fmt(strain, 3) +
+                               " (E = " + fmt(m.youngs_modulus, 3) +
+                               " Pa), beyond any elastic body (limit " + fmt(max_load_strain) +
+                               "): check the expression and its constants (a total force in N)."));
+      }
+
+
+
+      /** Refuses a prescribed velocity that is not finite over the run
+       *  or that is faster than the dilatational wave speed. */
+      void
+      check_prescribed_velocity(const Parameters &p, const std::string &over_run)
+      {
+        const BoundaryParameters &b     = p.boundary;
+        const std::string         entry = "Boundary conditions/Prescribed velocity";
+        const Peak                peak  = peak_over_run(p,
+                                        b.prescribed_velocity_expression,
+                                        b.prescribed_velocity_constants,
+                                        entry,
+                                        p.solver.end_time,
+                                        true);
+        check_finite(entry, b.prescribed_velocity_expression, peak, "v", "m/s", over_run);
+        const double c = p.material.wave_speed();
+        AssertThrow(peak.magnitude <= c,
+                    ExcMessage(entry + " = '" + b.prescribed_velocity_expression + "' reaches " +
+                               fmt(peak.magnitude, 3) + " m/s at t = " + fmt(peak.t) + " s" +
+                               over_run + ", faster than the dilatational wave speed " + fmt(c, 4) +
+                               " m/s: the prescribed boundary would outrun its own wave "
+                               "(a strain of v/c = " +
+                               fmt(peak.magnitude / c, 3) +
+                               " at once). Check the expression and its constants (a velocity "
+                               "in m/s)."));
+      }
+
+
+
+      /** Refuses an initial velocity field that is not finite on the
+       *  bodies or that reaches max_load_strain times the wave speed: a
+       *  spread of v/c is a strain of that order at once (the divergence
+       *  diagnosis names it from 5 % of c). */
+      void
+      check_initial_velocity(const Parameters &p)
+      {
+        const std::string entry    = "Initial conditions/Velocity function";
+        const auto        function = make_vector_function(p.initial.velocity_expression,
+                                                   p.initial.velocity_constants,
+                                                   "x,y,z",
+                                                   entry);
+        const Peak        peak     = peak_of(*function, body_points(p), 0.);
+        const double      c        = p.material.wave_speed();
+        AssertThrow(std::isfinite(peak.magnitude),
+                    ExcMessage(entry + " = '" + p.initial.velocity_expression +
+                               "' is not finite on the bodies (" +
+                               component_name("v", peak.component) + " = " + fmt(peak.value) +
+                               " m/s at the centre or a corner of their bounding box): give an "
+                               "expression that "
+                               "is finite over the bodies."));
+        AssertThrow(peak.magnitude <= max_load_strain * c,
+                    ExcMessage(entry + " = '" + p.initial.velocity_expression + "' reaches " +
+                               fmt(peak.magnitude, 3) +
+                               " m/s on the bodies, more than 100 times the dilatational wave "
+                               "speed " +
+                               fmt(c, 4) +
+                               " m/s: a strain of that order at once, beyond any elastic body. "
+                               "Check the expression and its constants (a velocity in m/s)."));
+      }
+
+
+
+      /** Refuses a gravity that is not finite or whose weight alone
+       *  strains a body of the longest side of @p size beyond
+       *  max_load_strain. */
+      void
+      check_gravity(const Parameters &p, const BodySize &size)
+      {
+        const MaterialParameters &m = p.material;
+        const Tensor<1, 3>       &g = p.solver.gravity;
+        for (unsigned int d = 0; d < 3; ++d)
+          AssertThrow(std::isfinite(g[d]),
+                      ExcMessage("Time integration/Gravity = " + fmt(g[0]) + ", " + fmt(g[1]) +
+                                 ", " + fmt(g[2]) +
+                                 " m/s^2 is not finite: give three finite components."));
+        const double strain = m.density * g.norm() * size.extent / m.youngs_modulus;
+        AssertThrow(strain <= max_load_strain,
+                    ExcMessage("Time integration/Gravity = " + fmt(g[0]) + ", " + fmt(g[1]) + ", " +
+                               fmt(g[2]) + " m/s^2 (|g| = " + fmt(g.norm(), 3) +
+                               " m/s^2): its weight alone strains a body of " +
+                               fmt(size.extent, 3) + " m by about " + fmt(strain, 3) +
+                               " (rho |g| L / E), beyond any elastic body (limit " +
+                               fmt(max_load_strain) + "): Earth's gravity is 0, 0, -9.81."));
+      }
     } // namespace
 
 
@@ -166,109 +304,20 @@ namespace WheelRail
     void
     check_loads(const Parameters &p)
     {
-      const BoundaryParameters &b     = p.boundary;
-      const MaterialParameters &m     = p.material;
-      const double              t_end = p.solver.end_time;
-      const BodySize            size  = body_size(p);
-      const std::string         over_run =
+      const double      t_end = p.solver.end_time;
+      const BodySize    size  = body_size(p);
+      const std::string over_run =
         " (sampled over the run, t = 0 to Time integration/End time = " + fmt(t_end) + " s)";
       const std::string bodies = "the " + p.problem.geometry + " (volume " + fmt(size.volume, 3) +
                                  " m^3 over its longest side " + fmt(size.extent, 3) +
                                  " m: a mean cross-section of " + fmt(size.cross_section(), 3) +
                                  " m^2)";
-
-      const auto not_finite = [&](const std::string &entry,
-                                  const std::string &expression,
-                                  const Peak        &peak,
-                                  const char        *prefix,
-                                  const char        *unit) {
-        AssertThrow(std::isfinite(peak.magnitude),
-                    ExcMessage(entry + " = '" + expression + "' is not finite at t = " +
-                               fmt(peak.t) + " s (" + component_name(prefix, peak.component) +
-                               " = " + fmt(peak.value) + " " + unit + ")" + over_run +
-                               ": give an expression that stays finite over the whole run."));
-      };
-
-      if (!b.applied_force_ids.empty())
-        {
-          const std::string entry = "Boundary conditions/Applied force";
-          const Peak        peak  = peak_over_run(
-            p, b.applied_force_expression, b.applied_force_constants, entry, t_end, false);
-          not_finite(entry, b.applied_force_expression, peak, "F", "N");
-          const double strain = peak.magnitude / (m.youngs_modulus * size.cross_section());
-          AssertThrow(strain <= max_load_strain,
-                      ExcMessage(
-                        entry + " = '" + b.applied_force_expression + "' reaches " +
-                        fmt(peak.magnitude, 3) + " N at t = " + fmt(peak.t) + " s" + over_run +
-                        ": on " + bodies + " the force alone gives a strain of about " +
-                        fmt(strain, 3) + " (E = " + fmt(m.youngs_modulus, 3) +
-                        " Pa), beyond any elastic body (limit " + fmt(max_load_strain) +
-                        "): check the expression and its constants (a total force in N)."));
-        }
-
-      if (!b.prescribed_velocity_ids.empty())
-        {
-          const std::string entry = "Boundary conditions/Prescribed velocity";
-          const Peak        peak  = peak_over_run(p,
-                                          b.prescribed_velocity_expression,
-                                          b.prescribed_velocity_constants,
-                                          entry,
-                                          t_end,
-                                          true);
-          not_finite(entry, b.prescribed_velocity_expression, peak, "v", "m/s");
-          const double c = m.wave_speed();
-          AssertThrow(peak.magnitude <= c,
-                      ExcMessage(entry + " = '" + b.prescribed_velocity_expression + "' reaches " +
-                                 fmt(peak.magnitude, 3) + " m/s at t = " + fmt(peak.t) + " s" +
-                                 over_run + ", faster than the dilatational wave speed " +
-                                 fmt(c, 4) +
-                                 " m/s: the prescribed boundary would outrun its own wave "
-                                 "(a strain of v/c = " +
-                                 fmt(peak.magnitude / c, 3) +
-                                 " at once). Check the expression and its constants (a velocity "
-                                 "in m/s)."));
-        }
-
-      {
-        // the initial velocity field: a spread of v/c is a strain of that
-        // order at once (the divergence diagnosis names it from 5 % of c)
-        const std::string entry    = "Initial conditions/Velocity function";
-        const auto        function = make_vector_function(p.initial.velocity_expression,
-                                                   p.initial.velocity_constants,
-                                                   "x,y,z",
-                                                   entry);
-        const Peak        peak     = peak_of(*function, body_points(p), 0.);
-        const double      c        = m.wave_speed();
-        AssertThrow(std::isfinite(peak.magnitude),
-                    ExcMessage(entry + " = '" + p.initial.velocity_expression +
-                               "' is not finite on the bodies (" +
-                               component_name("v", peak.component) + " = " + fmt(peak.value) +
-                               " m/s at the centre or a corner of their bounding box): give an "
-                               "expression that "
-                               "is finite over the bodies."));
-        AssertThrow(peak.magnitude <= max_load_strain * c,
-                    ExcMessage(entry + " = '" + p.initial.velocity_expression + "' reaches " +
-                               fmt(peak.magnitude, 3) +
-                               " m/s on the bodies, more than 100 times the dilatational wave "
-                               "speed " +
-                               fmt(c, 4) +
-                               " m/s: a strain of that order at once, beyond any elastic body. "
-                               "Check the expression and its constants (a velocity in m/s)."));
-      }
-
-      const Tensor<1, 3> &g = p.solver.gravity;
-      for (unsigned int d = 0; d < 3; ++d)
-        AssertThrow(std::isfinite(g[d]),
-                    ExcMessage("Time integration/Gravity = " + fmt(g[0]) + ", " + fmt(g[1]) + ", " +
-                               fmt(g[2]) + " m/s^2 is not finite: give three finite components."));
-      const double strain = m.density * g.norm() * size.extent / m.youngs_modulus;
-      AssertThrow(strain <= max_load_strain,
-                  ExcMessage("Time integration/Gravity = " + fmt(g[0]) + ", " + fmt(g[1]) + ", " +
-                             fmt(g[2]) + " m/s^2 (|g| = " + fmt(g.norm(), 3) +
-                             " m/s^2): its weight alone strains a body of " + fmt(size.extent, 3) +
-                             " m by about " + fmt(strain, 3) +
-                             " (rho |g| L / E), beyond any elastic body (limit " +
-                             fmt(max_load_strain) + "): Earth's gravity is 0, 0, -9.81."));
+      if (!p.boundary.applied_force_ids.empty())
+        check_applied_force(p, size, over_run, bodies);
+      if (!p.boundary.prescribed_velocity_ids.empty())
+        check_prescribed_velocity(p, over_run);
+      check_initial_velocity(p);
+      check_gravity(p, size);
     }
   } // namespace Consistency
 } // namespace WheelRail

@@ -186,6 +186,108 @@ namespace WheelRail
                                " of the same file: set each entry once in a file (a file may "
                                "override what a file it includes sets)."));
       }
+
+
+
+      /**
+       * Reads line @p number + 1 of @p filename from @p in into @p line as
+       * next_line() does and counts it in @p number; returns false at the
+       * end of the file. A failed read, a line longer than max_line_length
+       * and a NUL byte are errors. The UTF-8 byte-order mark of the first
+       * line is removed and a tab becomes a space (deal.II's parser reads it
+       * as one too).
+       */
+      bool
+      read_line(std::streambuf    &in,
+                const std::string &filename,
+                unsigned int      &number,
+                std::string       &line)
+      {
+        bool too_long = false;
+        try
+          {
+            if (!next_line(in, line, too_long))
+              return false;
+          }
+        catch (const std::exception &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(where(filename, number + 1) + "reading the file failed (" +
+                                   e.what() + ")."));
+          }
+        ++number;
+        AssertThrow(!too_long,
+                    ExcMessage(where(filename, number) + "the line is longer than " +
+                               std::to_string(max_line_length) +
+                               " characters, the most a parameter file's line may hold."));
+        if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+          line.erase(0, 3);
+        AssertThrow(line.find('\0') == std::string::npos,
+                    ExcMessage(where(filename, number) +
+                               "a NUL byte: this is not a text parameter file."));
+        std::replace(line.begin(), line.end(), '\t', ' ');
+        return true;
+      }
+
+
+
+      /**
+       * The statements of one file as its lines come: a line ending in a
+       * backslash joined with the next, and each complete statement checked by
+       * check_statement() against the subsections open and the entries set
+       * in this file.
+       */
+      class Statements
+      {
+      public:
+        explicit Statements(const std::string &filename)
+          : filename(filename)
+        {}
+
+        /** Whether a statement is continued from an earlier line. */
+        bool
+        continued() const
+        {
+          return joined_from > 0;
+        }
+
+        /** Adds line @p number, @p trimmed of white space; @p continues: it
+         *  ends in a backslash, which is left out. */
+        void
+        add(const std::string &trimmed, const bool continues, const unsigned int number)
+        {
+          if (!continued())
+            joined_from = number;
+          joined += continues ? trimmed.substr(0, trimmed.size() - 1) : trimmed;
+          if (!continues)
+            {
+              check_statement(statement(joined), filename, joined_from, sections, entries);
+              joined.clear();
+              joined_from = 0;
+            }
+        }
+
+        /** At the end of the file (@p who names it): no statement
+         *  continued past it, no subsection left open. */
+        void
+        finish(const std::string &who) const
+        {
+          AssertThrow(joined_from == 0,
+                      ExcMessage(where(filename, joined_from) +
+                                 "the statement is continued with '\\' past the end of the file."));
+          AssertThrow(sections.empty(),
+                      ExcMessage(who + " leaves " + std::to_string(sections.size()) +
+                                 " subsection(s) without 'end'."));
+        }
+
+      private:
+        const std::string       &filename;
+        std::vector<std::string> sections; ///< the subsections open in this file
+        /** The entries this file sets: full name -> value and line. */
+        std::map<std::string, std::pair<std::string, unsigned int>> entries;
+        std::string  joined;          ///< a statement continued over lines
+        unsigned int joined_from = 0; ///< its first line
+      };
     } // namespace
 
 
@@ -278,118 +380,94 @@ namespace WheelRail
       std::error_code   ec;
       const std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
       chain.push_back(canonical);
-      const std::filesystem::path directory = path.parent_path();
 
-      std::vector<std::string> sections; // the subsections open in this file
-      // the entries this file sets: full name -> value and line
-      std::map<std::string, std::pair<std::string, unsigned int>> entries;
-      std::string  joined;          // a statement continued over lines ending in '\'
-      unsigned int joined_from = 0; // its first line
-      unsigned int number      = 0;
-      for (std::string line;;)
+      Statements   statements(filename);
+      unsigned int number = 0;
+      for (std::string line; read_line(*in.rdbuf(), filename, number, line);)
         {
-          bool too_long = false;
-          try
-            {
-              if (!next_line(*in.rdbuf(), line, too_long))
-                break;
-            }
-          catch (const std::exception &e)
-            {
-              AssertThrow(false,
-                          ExcMessage(where(filename, number + 1) + "reading the file failed (" +
-                                     e.what() + ")."));
-            }
-          ++number;
-          AssertThrow(!too_long,
-                      ExcMessage(where(filename, number) + "the line is longer than " +
-                                 std::to_string(max_line_length) +
-                                 " characters, the most a parameter file's line may hold."));
-          if (number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
-            line.erase(0, 3);
-          AssertThrow(line.find('\0') == std::string::npos,
-                      ExcMessage(where(filename, number) +
-                                 "a NUL byte: this is not a text parameter file."));
-          // a tab separates words as a space does (deal.II's parser reads
-          // it so too)
-          std::replace(line.begin(), line.end(), '\t', ' ');
-
-          const bool        is_cont   = joined_from > 0;
+          const bool        is_cont   = statements.continued();
           const std::string trimmed   = Utilities::trim(line);
           const bool        continues = !trimmed.empty() && trimmed.back() == '\\';
           const std::string target =
             is_cont || continues ? std::string() : include_target(statement(line));
           if (target.empty())
             {
-              if (!is_cont)
-                joined_from = number;
-              joined += continues ? trimmed.substr(0, trimmed.size() - 1) : trimmed;
-              if (!continues)
-                {
-                  check_statement(statement(joined), filename, joined_from, sections, entries);
-                  joined.clear();
-                  joined_from = 0;
-                }
-              try
-                {
-                  expanded += line;
-                  expanded += '\n';
-                  origin.emplace_back(filename, number);
-                }
-              catch (const std::bad_alloc &)
-                {
-                  AssertThrow(false,
-                              ExcMessage(where(filename, number) +
-                                         "out of memory for the parameter files' text."));
-                }
-              continue;
+              statements.add(trimmed, continues, number);
+              keep(line, filename, number);
             }
-
-          const std::filesystem::path t(target);
-          const std::string           resolved =
-            (t.is_absolute() || directory.empty()) ? target : (directory / t).string();
-          const std::string resolved_canonical =
-            std::filesystem::weakly_canonical(resolved, ec).string();
-          for (unsigned int i = 0; i < chain.size(); ++i)
-            if (chain[i] == resolved_canonical)
-              {
-                std::string cycle;
-                for (unsigned int j = i; j < chain.size(); ++j)
-                  cycle += std::filesystem::path(chain[j]).filename().string() + " -> ";
-                AssertThrow(false,
-                            ExcMessage(where(filename, number) + "'include " + target +
-                                       "' closes a cycle of includes (" + cycle +
-                                       std::filesystem::path(resolved).filename().string() +
-                                       "): a file must not include itself."));
-              }
-          AssertThrow(depth + 1 < max_include_depth,
-                      ExcMessage(where(filename, number) + "more than " +
-                                 std::to_string(max_include_depth) + " nested includes."));
-          try
-            {
-              read(resolved, chain, depth + 1);
-            }
-          catch (const ExceptionBase &e)
-            {
-              // a message without a place is about the included file as a
-              // whole: it gets the place of the include line
-              std::ostringstream info;
-              e.print_info(info);
-              const std::string text = Utilities::trim(info.str());
-              AssertThrow(false,
-                          ExcMessage(text.compare(0, 6, "Line <") == 0 ?
-                                       text :
-                                       where(filename, number) + "'include " + target +
-                                         "': " + text));
-            }
+          else
+            include(target, filename, number, chain, depth);
         }
-      AssertThrow(joined_from == 0,
-                  ExcMessage(where(filename, joined_from) +
-                             "the statement is continued with '\\' past the end of the file."));
-      AssertThrow(sections.empty(),
-                  ExcMessage(who + " leaves " + std::to_string(sections.size()) +
-                             " subsection(s) without 'end'."));
+      statements.finish(who);
       chain.pop_back();
+    }
+
+
+
+    void
+    ExpandedText::keep(const std::string &line, const std::string &filename, unsigned int number)
+    {
+      try
+        {
+          expanded += line;
+          expanded += '\n';
+          origin.emplace_back(filename, number);
+        }
+      catch (const std::bad_alloc &)
+        {
+          AssertThrow(false,
+                      ExcMessage(where(filename, number) +
+                                 "out of memory for the parameter files' text."));
+        }
+    }
+
+
+
+    void
+    ExpandedText::include(const std::string        &target,
+                          const std::string        &filename,
+                          const unsigned int        number,
+                          std::vector<std::string> &chain,
+                          const unsigned int        depth)
+    {
+      const std::filesystem::path directory = std::filesystem::path(filename).parent_path();
+      const std::filesystem::path t(target);
+      const std::string           resolved =
+        (t.is_absolute() || directory.empty()) ? target : (directory / t).string();
+      std::error_code   ec;
+      const std::string resolved_canonical =
+        std::filesystem::weakly_canonical(resolved, ec).string();
+      for (unsigned int i = 0; i < chain.size(); ++i)
+        if (chain[i] == resolved_canonical)
+          {
+            std::string cycle;
+            for (unsigned int j = i; j < chain.size(); ++j)
+              cycle += std::filesystem::path(chain[j]).filename().string() + " -> ";
+            AssertThrow(false,
+                        ExcMessage(where(filename, number) + "'include " + target +
+                                   "' closes a cycle of includes (" + cycle +
+                                   std::filesystem::path(resolved).filename().string() +
+                                   "): a file must not include itself."));
+          }
+      AssertThrow(depth + 1 < max_include_depth,
+                  ExcMessage(where(filename, number) + "more than " +
+                             std::to_string(max_include_depth) + " nested includes."));
+      try
+        {
+          read(resolved, chain, depth + 1);
+        }
+      catch (const ExceptionBase &e)
+        {
+          // a message without a place is about the included file as a
+          // whole: it gets the place of the include line
+          std::ostringstream info;
+          e.print_info(info);
+          const std::string text = Utilities::trim(info.str());
+          AssertThrow(false,
+                      ExcMessage(text.compare(0, 6, "Line <") == 0 ?
+                                   text :
+                                   where(filename, number) + "'include " + target + "': " + text));
+        }
     }
 
 

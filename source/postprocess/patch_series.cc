@@ -142,9 +142,26 @@ namespace WheelRail
   void
   PatchSeries::open(const unsigned long frames)
   {
-    const GeometryParameters &g     = access.parameters.geometry;
-    const auto                nodes = access.contact->master_node_results();
-    const auto                faces = access.contact->master_face_nodes();
+    const auto             nodes = access.contact->master_node_results();
+    const auto             faces = access.contact->master_face_nodes();
+    const std::vector<int> quads = select_zone(nodes, faces);
+    const std::string      path  = access.output_directory + "/" + file_name;
+    if (frames == 0)
+      create_file(path, nodes, quads);
+    else
+      {
+        reopen_file(path, frames);
+        cut_tread_frames(frames);
+      }
+  }
+
+
+
+  std::vector<int>
+  PatchSeries::select_zone(const std::vector<NodalContact>                &nodes,
+                           const std::vector<std::array<unsigned int, 4>> &faces)
+  {
+    const GeometryParameters &g = access.parameters.geometry;
     std::vector<int>          index(nodes.size(), -1);
     for (unsigned int i = 0; i < nodes.size(); ++i)
       if (in_solution_zone(g, nodes[i]))
@@ -165,124 +182,140 @@ namespace WheelRail
               quads.push_back(index[face[v]]);
           }
       }
-    n_quads                = quads.size() / 4;
-    const std::string path = access.output_directory + "/" + file_name;
-    const hsize_t     n    = zone_nodes.size();
-    if (frames == 0)
+    n_quads = quads.size() / 4;
+    return quads;
+  }
+
+
+
+  void
+  PatchSeries::create_file(const std::string               &path,
+                           const std::vector<NodalContact> &nodes,
+                           const std::vector<int>          &quads)
+  {
+    const hsize_t n = zone_nodes.size();
+    file            = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    check(file, "create the file");
+    const hid_t         mesh = H5Gcreate2(file, "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    std::vector<double> points, area;
+    for (const unsigned int i : zone_nodes)
       {
-        file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-        check(file, "create the file");
-        const hid_t         mesh = H5Gcreate2(file, "mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        std::vector<double> points, area;
-        for (const unsigned int i : zone_nodes)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              points.push_back(nodes[i].X[d]);
-            area.push_back(nodes[i].area);
-          }
-        hid_t set = create(mesh, "points", {n, 3}, H5T_IEEE_F64LE, false);
-        check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, points.data()),
-              "write the points");
-        H5Dclose(set);
-        set = create(mesh, "quads", {hsize_t(n_quads), 4}, H5T_STD_I32LE, false);
-        if (n_quads > 0)
-          check(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, quads.data()),
-                "write the quadrilaterals");
-        H5Dclose(set);
-        set = create(mesh, "area", {n}, H5T_IEEE_F64LE, false);
-        check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, area.data()),
-              "write the areas");
-        H5Dclose(set);
-        H5Gclose(mesh);
-        H5Dclose(create(file, "time", {0}, H5T_IEEE_F64LE, true));
-        const hid_t group = H5Gcreate2(file, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-        for (unsigned int f = 0; f < n_series_fields; ++f)
-          {
-            const PatchField &field = patch_fields()[f];
-            H5Dclose(create(group,
-                            field.name,
-                            field.components == 1 ? std::vector<hsize_t>{0, n} :
-                                                    std::vector<hsize_t>{0, n, field.components},
-                            H5T_IEEE_F32LE,
-                            true));
-          }
-        H5Gclose(group);
-        H5Gclose(H5Gcreate2(file, "tread", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+        for (unsigned int d = 0; d < dim; ++d)
+          points.push_back(nodes[i].X[d]);
+        area.push_back(nodes[i].area);
       }
-    else
+    hid_t set = create(mesh, "points", {n, 3}, H5T_IEEE_F64LE, false);
+    check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, points.data()),
+          "write the points");
+    H5Dclose(set);
+    set = create(mesh, "quads", {hsize_t(n_quads), 4}, H5T_STD_I32LE, false);
+    if (n_quads > 0)
+      check(H5Dwrite(set, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, quads.data()),
+            "write the quadrilaterals");
+    H5Dclose(set);
+    set = create(mesh, "area", {n}, H5T_IEEE_F64LE, false);
+    check(H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, area.data()),
+          "write the areas");
+    H5Dclose(set);
+    H5Gclose(mesh);
+    H5Dclose(create(file, "time", {0}, H5T_IEEE_F64LE, true));
+    const hid_t group = H5Gcreate2(file, "fields", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    for (unsigned int f = 0; f < n_series_fields; ++f)
       {
-        // a resumed run: the frames of its checkpoint, the later ones cut
-        file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-        AssertThrow(file >= 0,
-                    ExcMessage("Output/Patch series interval: the resumed run's " + path +
-                               " is missing or not readable; it holds the frames before "
-                               "the checkpoint."));
-        const hid_t time = H5Dopen2(file, "time", H5P_DEFAULT);
-        check(time, "open time");
-        hid_t   space = H5Dget_space(time);
-        hsize_t have  = 0;
-        H5Sget_simple_extent_dims(space, &have, nullptr);
+        const PatchField &field = patch_fields()[f];
+        H5Dclose(create(group,
+                        field.name,
+                        field.components == 1 ? std::vector<hsize_t>{0, n} :
+                                                std::vector<hsize_t>{0, n, field.components},
+                        H5T_IEEE_F32LE,
+                        true));
+      }
+    H5Gclose(group);
+    H5Gclose(H5Gcreate2(file, "tread", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT));
+  }
+
+
+
+  void
+  PatchSeries::reopen_file(const std::string &path, const unsigned long frames)
+  {
+    const hsize_t n = zone_nodes.size();
+    file            = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    AssertThrow(file >= 0,
+                ExcMessage("Output/Patch series interval: the resumed run's " + path +
+                           " is missing or not readable; it holds the frames before "
+                           "the checkpoint."));
+    const hid_t time = H5Dopen2(file, "time", H5P_DEFAULT);
+    check(time, "open time");
+    hid_t   space = H5Dget_space(time);
+    hsize_t have  = 0;
+    H5Sget_simple_extent_dims(space, &have, nullptr);
+    H5Sclose(space);
+    AssertThrow(have >= frames,
+                ExcMessage(path + " holds " + std::to_string(have) + " frames, the checkpoint " +
+                           std::to_string(frames) + "."));
+    times.resize(frames);
+    if (frames > 0)
+      {
+        space                  = H5Dget_space(time);
+        const hsize_t start[1] = {0}, count[1] = {frames};
+        H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+        const hid_t memory = H5Screate_simple(1, count, nullptr);
+        check(H5Dread(time, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, times.data()),
+              "read the times");
+        H5Sclose(memory);
         H5Sclose(space);
-        AssertThrow(have >= frames,
-                    ExcMessage(path + " holds " + std::to_string(have) +
-                               " frames, the checkpoint " + std::to_string(frames) + "."));
-        times.resize(frames);
-        if (frames > 0)
-          {
-            space                  = H5Dget_space(time);
-            const hsize_t start[1] = {0}, count[1] = {frames};
-            H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
-            const hid_t memory = H5Screate_simple(1, count, nullptr);
-            check(H5Dread(time, H5T_NATIVE_DOUBLE, memory, space, H5P_DEFAULT, times.data()),
-                  "read the times");
-            H5Sclose(memory);
-            H5Sclose(space);
-          }
-        const hsize_t cut[1] = {frames};
-        check(H5Dset_extent(time, cut), "cut time");
-        H5Dclose(time);
-        for (unsigned int f = 0; f < n_series_fields; ++f)
-          {
-            const PatchField &field = patch_fields()[f];
-            const hid_t       set   = H5Dopen2(file, ("fields/" + field.name).c_str(), H5P_DEFAULT);
-            const hsize_t     dims[3] = {frames, n, field.components};
-            check(set, "open " + field.name);
-            check(H5Dset_extent(set, dims), "cut " + field.name);
-            H5Dclose(set);
-          }
-        // the tread frames: sizes of those kept, the later groups removed
-        tread_sizes.assign(frames, {{0, 0}});
-        for (unsigned long k = 0; k < frames; ++k)
-          if (H5Lexists(file, tread_group(k).c_str(), H5P_DEFAULT) > 0)
-            for (unsigned int which = 0; which < 2; ++which)
-              {
-                const std::string name = tread_group(k) + (which == 0 ? "/points" : "/quads");
-                const hid_t       set  = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
-                check(set, "open " + name);
-                const hid_t space = H5Dget_space(set);
-                hsize_t     dims[2];
-                H5Sget_simple_extent_dims(space, dims, nullptr);
-                H5Sclose(space);
-                H5Dclose(set);
-                tread_sizes[k][which] = dims[0];
-              }
-        const hid_t tread = H5Gopen2(file, "tread", H5P_DEFAULT);
-        check(tread, "open tread");
-        H5G_info_t info;
-        check(H5Gget_info(tread, &info), "read tread");
-        std::vector<std::string> later;
-        for (hsize_t i = 0; i < info.nlinks; ++i)
-          {
-            char name[32] = {};
-            H5Lget_name_by_idx(
-              tread, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT);
-            if (std::stoul(name) >= frames)
-              later.emplace_back(name);
-          }
-        for (const std::string &name : later)
-          check(H5Ldelete(tread, name.c_str(), H5P_DEFAULT), "cut the tread frames");
-        H5Gclose(tread);
       }
+    const hsize_t cut[1] = {frames};
+    check(H5Dset_extent(time, cut), "cut time");
+    H5Dclose(time);
+    for (unsigned int f = 0; f < n_series_fields; ++f)
+      {
+        const PatchField &field   = patch_fields()[f];
+        const hid_t       set     = H5Dopen2(file, ("fields/" + field.name).c_str(), H5P_DEFAULT);
+        const hsize_t     dims[3] = {frames, n, field.components};
+        check(set, "open " + field.name);
+        check(H5Dset_extent(set, dims), "cut " + field.name);
+        H5Dclose(set);
+      }
+  }
+
+
+
+  void
+  PatchSeries::cut_tread_frames(const unsigned long frames)
+  {
+    tread_sizes.assign(frames, {{0, 0}});
+    for (unsigned long k = 0; k < frames; ++k)
+      if (H5Lexists(file, tread_group(k).c_str(), H5P_DEFAULT) > 0)
+        for (unsigned int which = 0; which < 2; ++which)
+          {
+            const std::string name = tread_group(k) + (which == 0 ? "/points" : "/quads");
+            const hid_t       set  = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+            check(set, "open " + name);
+            const hid_t space = H5Dget_space(set);
+            hsize_t     dims[2];
+            H5Sget_simple_extent_dims(space, dims, nullptr);
+            H5Sclose(space);
+            H5Dclose(set);
+            tread_sizes[k][which] = dims[0];
+          }
+    const hid_t tread = H5Gopen2(file, "tread", H5P_DEFAULT);
+    check(tread, "open tread");
+    H5G_info_t info;
+    check(H5Gget_info(tread, &info), "read tread");
+    std::vector<std::string> later;
+    for (hsize_t i = 0; i < info.nlinks; ++i)
+      {
+        char name[32] = {};
+        H5Lget_name_by_idx(
+          tread, ".", H5_INDEX_NAME, H5_ITER_INC, i, name, sizeof(name), H5P_DEFAULT);
+        if (std::stoul(name) >= frames)
+          later.emplace_back(name);
+      }
+    for (const std::string &name : later)
+      check(H5Ldelete(tread, name.c_str(), H5P_DEFAULT), "cut the tread frames");
+    H5Gclose(tread);
   }
 
 

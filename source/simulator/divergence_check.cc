@@ -70,8 +70,45 @@ namespace WheelRail
 
 
 
+  /** What the likely cause of a divergence is judged by: the body's size,
+   *  the loads at their largest so far and the time step. */
+  struct DivergenceCheck::Measures
+  {
+    double            extent;         ///< the bodies' longest side [m]
+    double            wave_speed;     ///< the dilatational wave speed c [m/s]
+    double            gravity_strain; ///< rho |g| extent / E [-]
+    double            section;        ///< the bodies' mean cross-section [m^2]
+    Consistency::Peak force;          ///< the applied force so far [N]
+    Consistency::Peak velocity;       ///< the prescribed velocity so far [m/s]
+    double            force_strain;   ///< the force over E section [-]
+    double            dt;             ///< the time step [s]
+    double            critical;       ///< the mesh's critical time step [s]
+    double            h_min;          ///< the smallest element length [m]
+  };
+
+
+
   std::string
   DivergenceCheck::explain(const unsigned long n, const Energies &e) const
+  {
+    const std::string  location = worst_node();
+    const Measures     m        = measures(n);
+    std::ostringstream message;
+    message << "The solution diverged at step " << n << ", t = " << fmt(n * m.dt) << " s: "
+            << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
+                  "the energy balance error " + fmt(balance.max_balance_error(), 3) +
+                    " exceeds Output/Divergence limit " +
+                    fmt(access.parameters.output.divergence_limit) :
+                  std::string("NaN or infinite energy"))
+            << "; " << location << ". Likely cause: " << likely_cause(m)
+            << ". The statistics and probes up to the last statistics row were written.";
+    return message.str();
+  }
+
+
+
+  std::string
+  DivergenceCheck::worst_node() const
   {
     // the first non-finite (or, if all are finite, the fastest) DoF of
     // each rank; the rank with the worst one tells
@@ -110,107 +147,119 @@ namespace WheelRail
               << " m, v = " << fmt(v.local_element(worst), 4) << " m/s"
               << (access.solver.boundary_dof_mask()[worst] ? " (a surface node)" : "");
       }
-    const std::string location =
-      Utilities::MPI::broadcast(access.mpi_communicator, where.str(), teller);
+    return Utilities::MPI::broadcast(access.mpi_communicator, where.str(), teller);
+  }
 
+
+
+  double
+  DivergenceCheck::extent() const
+  {
+    double      extent = 0;
+    const auto &points = access.solver.support_points();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        double lo = std::numeric_limits<double>::max(), hi = -lo;
+        for (const Point<dim> &p : points)
+          {
+            lo = std::min(lo, p[d]);
+            hi = std::max(hi, p[d]);
+          }
+        lo     = Utilities::MPI::min(lo, access.mpi_communicator);
+        hi     = Utilities::MPI::max(hi, access.mpi_communicator);
+        extent = std::max(extent, hi - lo);
+      }
+    return extent;
+  }
+
+
+
+  DivergenceCheck::Measures
+  DivergenceCheck::measures(const unsigned long n) const
+  {
+    Measures m;
     // the body's size, for the strain that gravity alone would cause
-    double extent = 0;
-    {
-      const auto &points = access.solver.support_points();
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          double lo = std::numeric_limits<double>::max(), hi = -lo;
-          for (const Point<dim> &p : points)
-            {
-              lo = std::min(lo, p[d]);
-              hi = std::max(hi, p[d]);
-            }
-          lo     = Utilities::MPI::min(lo, access.mpi_communicator);
-          hi     = Utilities::MPI::max(hi, access.mpi_communicator);
-          extent = std::max(extent, hi - lo);
-        }
-    }
+    m.extent                           = extent();
     const MaterialParameters &material = access.parameters.material;
-    const double              c        = material.wave_speed();
-    const double              gravity_strain =
-      material.density * access.parameters.solver.gravity.norm() * extent / material.youngs_modulus;
-    const double dt = access.solver.time_step();
+    m.wave_speed                       = material.wave_speed();
+    m.gravity_strain = material.density * access.parameters.solver.gravity.norm() * m.extent /
+                       material.youngs_modulus;
+    m.dt = access.solver.time_step();
     // the applied force and the prescribed velocity at their largest so far
-    const Parameters &prm     = access.parameters;
-    const double      t       = n * dt;
-    const auto        section = Consistency::body_size(prm).cross_section();
-    Consistency::Peak force, velocity;
+    const Parameters &prm = access.parameters;
+    const double      t   = n * m.dt;
+    m.section             = Consistency::body_size(prm).cross_section();
     if (!prm.boundary.applied_force_ids.empty())
-      force = Consistency::peak_over_run(prm,
-                                         prm.boundary.applied_force_expression,
-                                         prm.boundary.applied_force_constants,
-                                         "Boundary conditions/Applied force",
-                                         t,
-                                         false);
+      m.force = Consistency::peak_over_run(prm,
+                                           prm.boundary.applied_force_expression,
+                                           prm.boundary.applied_force_constants,
+                                           "Boundary conditions/Applied force",
+                                           t,
+                                           false);
     if (!prm.boundary.prescribed_velocity_ids.empty())
-      velocity = Consistency::peak_over_run(prm,
-                                            prm.boundary.prescribed_velocity_expression,
-                                            prm.boundary.prescribed_velocity_constants,
-                                            "Boundary conditions/Prescribed velocity",
-                                            t,
-                                            true);
-    const double       force_strain = force.magnitude / (material.youngs_modulus * section);
-    const double       stable       = access.solver.stable_time_step();
-    const double       critical     = stable / access.parameters.solver.courant_factor;
-    const double       h_min        = critical * c; // the smallest element length
-    std::ostringstream message;
-    message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
-            << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
-                  "the energy balance error " + fmt(balance.max_balance_error(), 3) +
-                    " exceeds Output/Divergence limit " +
-                    fmt(access.parameters.output.divergence_limit) :
-                  std::string("NaN or infinite energy"))
-            << "; " << location << ". Likely cause: ";
+      m.velocity = Consistency::peak_over_run(prm,
+                                              prm.boundary.prescribed_velocity_expression,
+                                              prm.boundary.prescribed_velocity_constants,
+                                              "Boundary conditions/Prescribed velocity",
+                                              t,
+                                              true);
+    m.force_strain = m.force.magnitude / (material.youngs_modulus * m.section);
+    m.critical     = access.solver.stable_time_step() / access.parameters.solver.courant_factor;
+    m.h_min        = m.critical * m.wave_speed; // the smallest element length
+    return m;
+  }
+
+
+
+  std::string
+  DivergenceCheck::likely_cause(const Measures &m) const
+  {
     // the causes in the order in which one hides the next: a load (gravity,
     // the applied force, the prescribed velocity) or an initial state
     // beyond small strains, a contact the search missed, the
     // contact penalty, the time step
+    const Parameters  &prm = access.parameters;
+    const double       c   = m.wave_speed;
+    std::ostringstream message;
     if (velocity_spread > 0.05 * c)
       message << "the initial velocity: its components differ by up to " << fmt(velocity_spread, 4)
               << " m/s over the nodes, " << fmt(100 * velocity_spread / c, 3)
               << " % of the wave speed " << fmt(c, 4)
               << " m/s, i.e. strains of that order at once (Initial conditions)";
-    else if (gravity_strain > 1e-2)
-      message << "the gravity " << fmt(access.parameters.solver.gravity.norm(), 4)
-              << " m/s^2: its weight alone strains a body of " << fmt(extent, 3) << " m by about "
-              << fmt(gravity_strain, 3) << " (Time integration/Gravity)";
-    else if (force_strain > 1e-2)
-      message << "the applied force, up to " << fmt(force.magnitude, 4)
-              << " N (at t = " << fmt(force.t) << " s): on the mean cross-section "
-              << fmt(section, 3) << " m^2 of the bodies it alone strains them by about "
-              << fmt(force_strain, 3) << " (Boundary conditions/Applied force = '"
+    else if (m.gravity_strain > 1e-2)
+      message << "the gravity " << fmt(prm.solver.gravity.norm(), 4)
+              << " m/s^2: its weight alone strains a body of " << fmt(m.extent, 3) << " m by about "
+              << fmt(m.gravity_strain, 3) << " (Time integration/Gravity)";
+    else if (m.force_strain > 1e-2)
+      message << "the applied force, up to " << fmt(m.force.magnitude, 4)
+              << " N (at t = " << fmt(m.force.t) << " s): on the mean cross-section "
+              << fmt(m.section, 3) << " m^2 of the bodies it alone strains them by about "
+              << fmt(m.force_strain, 3) << " (Boundary conditions/Applied force = '"
               << prm.boundary.applied_force_expression << "')";
-    else if (velocity.magnitude > 0.05 * c)
-      message << "the prescribed velocity, up to " << fmt(velocity.magnitude, 4)
-              << " m/s (at t = " << fmt(velocity.t) << " s), "
-              << fmt(100 * velocity.magnitude / c, 3) << " % of the wave speed " << fmt(c, 4)
+    else if (m.velocity.magnitude > 0.05 * c)
+      message << "the prescribed velocity, up to " << fmt(m.velocity.magnitude, 4)
+              << " m/s (at t = " << fmt(m.velocity.t) << " s), "
+              << fmt(100 * m.velocity.magnitude / c, 3) << " % of the wave speed " << fmt(c, 4)
               << " m/s, i.e. strains of that order at once (Boundary conditions/Prescribed "
                  "velocity = '"
               << prm.boundary.prescribed_velocity_expression << "')";
-    else if (access.contact && deepest_penetration > 0.5 * h_min)
+    else if (access.contact && deepest_penetration > 0.5 * m.h_min)
       message << "a contact missed or overrun: slave nodes reached "
               << fmt(deepest_penetration * 1e3, 3)
               << " mm into the master surface, more than half the smallest element length "
-              << fmt(h_min * 1e3, 3)
+              << fmt(m.h_min * 1e3, 3)
               << " mm (Contact/Search margin, Search interval; or Penalty scale factor too soft)";
     else if (access.contact && most_contact_nodes > 0)
       message << "the contact (up to " << most_contact_nodes
               << " nodes in contact so far), penalty scale factor "
-              << fmt(access.parameters.contact.penalty_scale) << " (too stiff for the time step "
-              << fmt(dt)
+              << fmt(prm.contact.penalty_scale) << " (too stiff for the time step " << fmt(m.dt)
               << " s, or too soft for the load: Contact/Penalty scale factor, Time "
                  "integration/Courant factor)";
-    else if (dt > 0.95 * critical)
-      message << "the time step " << fmt(dt) << " s at the critical step " << fmt(critical)
+    else if (m.dt > 0.95 * m.critical)
+      message << "the time step " << fmt(m.dt) << " s at the critical step " << fmt(m.critical)
               << " s of the mesh (Time integration/Time step, Courant factor)";
     else
       message << "an unconstrained body or an initial condition far from equilibrium";
-    message << ". The statistics and probes up to the last statistics row were written.";
     return message.str();
   }
 } // namespace WheelRail

@@ -66,8 +66,32 @@ namespace WheelRail
       locate(const std::string &message) const;
 
     private:
+      /**
+       * Reads @p filename (an include @p depth levels down; @p chain: the
+       * files that include it, as canonical paths) line by line: each
+       * statement is checked and kept, each include line is replaced by
+       * the included file's lines.
+       */
       void
       read(const std::string &filename, std::vector<std::string> &chain, unsigned int depth);
+
+      /** Appends @p line, line @p number of @p filename, to the expanded
+       *  text and its origin; running out of memory is an error. */
+      void
+      keep(const std::string &line, const std::string &filename, unsigned int number);
+
+      /**
+       * Reads the file @p target of "include TARGET" on line @p number of
+       * @p filename (relative to its directory) in its place; a cycle of
+       * includes and more than max_include_depth nested ones are errors.
+       * A message of the included file without a line gets this line.
+       */
+      void
+      include(const std::string        &target,
+              const std::string        &filename,
+              unsigned int              number,
+              std::vector<std::string> &chain,
+              unsigned int              depth);
 
       std::string                                       top;
       std::string                                       expanded;

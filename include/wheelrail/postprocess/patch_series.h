@@ -57,10 +57,34 @@ namespace WheelRail
     {}
 
   private:
-    /** Create the file with the mesh (frame 0) or reopen it and cut it to
-     *  @p frames frames (a resumed run). */
+    /** Select the solution zone's nodes, then create the file with the
+     *  mesh (frame 0) or reopen it and cut it to @p frames frames (a
+     *  resumed run). */
     void
     open(const unsigned long frames);
+    /** Fill zone_nodes with the indices of the rail-top @p nodes in the
+     *  solution zone and set n_quads; returns the @p faces with all four
+     *  nodes in the zone as quadrilaterals (four zone-node indices each,
+     *  in the VTK / XDMF order round the cell). */
+    std::vector<int>
+    select_zone(const std::vector<NodalContact>                &nodes,
+                const std::vector<std::array<unsigned int, 4>> &faces);
+    /** Create the file at @p path: /mesh (the zone's points and areas from
+     *  @p nodes, @p quads), an empty /time, an empty extendable dataset
+     *  per field in /fields and an empty group /tread. */
+    void
+    create_file(const std::string               &path,
+                const std::vector<NodalContact> &nodes,
+                const std::vector<int>          &quads);
+    /** Reopen the file at @p path (a resumed run), read the times of its
+     *  first @p frames frames and cut /time and /fields to them. */
+    void
+    reopen_file(const std::string &path, const unsigned long frames);
+    /** In the reopened file: the sizes of the tread frames before
+     *  @p frames into tread_sizes (0 where a frame has none), and the
+     *  groups /tread/K of later frames removed. */
+    void
+    cut_tread_frames(const unsigned long frames);
     /** The wheel tread's faces over the zone at frame @p frame: group
      *  /tread/FRAME with points (current positions), quads, area and the
      *  fields, none if no face is there. */

@@ -44,9 +44,33 @@ namespace WheelRail
     }
 
   private:
-    /** Where and why the run diverged at step @p n (all ranks call it). */
+    struct Measures;
+
+    /** Where and why the run diverged at step @p n with energies @p e
+     *  (all ranks call it): the step and time, the energy that failed,
+     *  worst_node() and likely_cause(). */
     std::string
     explain(const unsigned long n, const Energies &e) const;
+    /** Where the solution is worst: the first non-finite (or, if all are
+     *  finite, the fastest) DoF over the ranks, with its position, body,
+     *  component, displacement and velocity (all ranks call it; the rank
+     *  that holds it broadcasts the text). */
+    std::string
+    worst_node() const;
+    /** The bodies' longest side [m] over the support points of all ranks. */
+    double
+    extent() const;
+    /** The measures likely_cause() judges by, for a divergence at step
+     *  @p n (all ranks call it). */
+    Measures
+    measures(const unsigned long n) const;
+    /** The likely cause of the divergence, the first of the initial
+     *  velocity, gravity, the applied force, the prescribed velocity, a
+     *  missed contact, the contact penalty and the time step whose
+     *  measure in @p m (or in this check's records) is too large; else an
+     *  unconstrained body. */
+    std::string
+    likely_cause(const Measures &m) const;
 
     const SimulatorAccess      &access;
     const EnergyBalance        &balance;
