@@ -80,8 +80,8 @@ done
 [ $bench -eq 1 ] && echo "bench bench_paper 2 $top/prm/bench_paper.prm" >> "$jobs.2"
 
 echo "same_bits.sh: $(wc -l < "$jobs") one-rank and $(wc -l < "$jobs.2") two-rank inputs, in $work"
-xargs -P 2 -L 1 bash -c 'run_one "$@"' _ < "$jobs" > "$work/report"
-xargs -P 1 -L 1 bash -c 'run_one "$@"' _ < "$jobs.2" >> "$work/report"
+xargs -r -P 2 -L 1 bash -c 'run_one "$@"' _ < "$jobs" > "$work/report"
+xargs -r -P 1 -L 1 bash -c 'run_one "$@"' _ < "$jobs.2" >> "$work/report"
 sort "$work/report"
 n_diff=$(grep -c '^DIFFER' "$work/report")
 echo "same_bits.sh: $(grep -c '^same' "$work/report") same, $n_diff different"
