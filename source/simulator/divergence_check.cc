@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/parameters/consistency.h>
 #include <wheelrail/simulator/divergence_check.h>
@@ -8,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace WheelRail
 {
@@ -70,52 +72,63 @@ namespace WheelRail
 
 
 
-  std::string
-  DivergenceCheck::explain(const unsigned long n, const Energies &e) const
+  namespace
   {
-    // the first non-finite (or, if all are finite, the fastest) DoF of
-    // each rank; the rank with the worst one tells
-    const VectorType &u = access.solver.displacement(), &v = access.solver.velocity();
-    unsigned int      worst       = numbers::invalid_unsigned_int;
-    double            worst_value = -1;
-    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
-      {
-        const double ui = u.local_element(i), vi = v.local_element(i);
-        const double value = (!std::isfinite(ui) || !std::isfinite(vi)) ?
-                               std::numeric_limits<double>::infinity() :
-                               std::abs(vi);
-        if (value > worst_value)
-          {
-            worst_value = value;
-            worst       = i;
-          }
-      }
-    const double       global_worst = Utilities::MPI::max(worst_value, access.mpi_communicator);
-    const unsigned int my_rank      = Utilities::MPI::this_mpi_process(access.mpi_communicator);
-    const unsigned int teller =
-      Utilities::MPI::min(worst_value == global_worst ?
-                            my_rank :
-                            Utilities::MPI::n_mpi_processes(access.mpi_communicator),
-                          access.mpi_communicator);
-    std::ostringstream where;
-    if (my_rank == teller && worst != numbers::invalid_unsigned_int)
-      {
-        const Point<dim> &X    = access.solver.support_points()[worst];
-        const char       *body = Geometry::body_name(access.solver.dof_material(worst));
-        where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
-              << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
-              << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "
-              << "xyz"[access.solver.dof_component(worst)]
-              << ", u = " << fmt(u.local_element(worst), 4)
-              << " m, v = " << fmt(v.local_element(worst), 4) << " m/s"
-              << (access.solver.boundary_dof_mask()[worst] ? " (a surface node)" : "");
-      }
-    const std::string location =
-      Utilities::MPI::broadcast(access.mpi_communicator, where.str(), teller);
-
-    // the body's size, for the strain that gravity alone would cause
-    double extent = 0;
+    /** Where the run diverged: the first non-finite (or, if all are
+     *  finite, the fastest) DoF of all ranks, its position, body,
+     *  component, displacement and velocity. Collective. */
+    std::string
+    worst_node(const SimulatorAccess &access)
     {
+      // the first non-finite (or, if all are finite, the fastest) DoF of
+      // each rank; the rank with the worst one tells
+      const VectorType &u = access.solver.displacement(), &v = access.solver.velocity();
+      unsigned int      worst       = numbers::invalid_unsigned_int;
+      double            worst_value = -1;
+      for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+        {
+          const double ui = u.local_element(i), vi = v.local_element(i);
+          const double value = (!std::isfinite(ui) || !std::isfinite(vi)) ?
+                                 std::numeric_limits<double>::infinity() :
+                                 std::abs(vi);
+          if (value > worst_value)
+            {
+              worst_value = value;
+              worst       = i;
+            }
+        }
+      const double       global_worst = Utilities::MPI::max(worst_value, access.mpi_communicator);
+      const unsigned int my_rank      = Utilities::MPI::this_mpi_process(access.mpi_communicator);
+      const unsigned int teller =
+        Utilities::MPI::min(worst_value == global_worst ?
+                              my_rank :
+                              Utilities::MPI::n_mpi_processes(access.mpi_communicator),
+                            access.mpi_communicator);
+      std::ostringstream where;
+      if (my_rank == teller && worst != numbers::invalid_unsigned_int)
+        {
+          const Point<dim> &X = access.solver.support_points()[worst];
+          const char       *body =
+            access.parameters.geometry_model->body_name(access.solver.dof_material(worst));
+          where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
+                << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
+                << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "
+                << "xyz"[access.solver.dof_component(worst)]
+                << ", u = " << fmt(u.local_element(worst), 4)
+                << " m, v = " << fmt(v.local_element(worst), 4) << " m/s"
+                << (access.solver.boundary_dof_mask()[worst] ? " (a surface node)" : "");
+        }
+      return Utilities::MPI::broadcast(access.mpi_communicator, where.str(), teller);
+    }
+
+
+
+    /** The largest extent of the bodies' nodes over the coordinate
+     *  directions [m]. Collective. */
+    double
+    body_extent(const SimulatorAccess &access)
+    {
+      double      extent = 0;
       const auto &points = access.solver.support_points();
       for (unsigned int d = 0; d < dim; ++d)
         {
@@ -129,31 +142,53 @@ namespace WheelRail
           hi     = Utilities::MPI::max(hi, access.mpi_communicator);
           extent = std::max(extent, hi - lo);
         }
+      return extent;
     }
+
+
+    /** The applied force and the prescribed velocity at their largest
+     *  until @p t (none where no boundary has them). */
+    std::pair<Consistency::Peak, Consistency::Peak>
+    load_peaks(const Parameters &prm, const double t)
+    {
+      Consistency::Peak force, velocity;
+      if (!prm.boundary.applied_force_ids.empty())
+        force = Consistency::peak_over_run(prm,
+                                           prm.boundary.applied_force_expression,
+                                           prm.boundary.applied_force_constants,
+                                           "Boundary conditions/Applied force",
+                                           t,
+                                           false);
+      if (!prm.boundary.prescribed_velocity_ids.empty())
+        velocity = Consistency::peak_over_run(prm,
+                                              prm.boundary.prescribed_velocity_expression,
+                                              prm.boundary.prescribed_velocity_constants,
+                                              "Boundary conditions/Prescribed velocity",
+                                              t,
+                                              true);
+      return {force, velocity};
+    }
+  } // namespace
+
+
+
+  std::string
+  DivergenceCheck::explain(const unsigned long n, const Energies &e) const
+  {
+    const std::string location = worst_node(access);
+
+    // the body's size, for the strain that gravity alone would cause
+    const double              extent   = body_extent(access);
     const MaterialParameters &material = access.parameters.material;
     const double              c        = material.wave_speed();
     const double              gravity_strain =
       material.density * access.parameters.solver.gravity.norm() * extent / material.youngs_modulus;
     const double dt = access.solver.time_step();
     // the applied force and the prescribed velocity at their largest so far
-    const Parameters &prm     = access.parameters;
-    const double      t       = n * dt;
-    const auto        section = Consistency::body_size(prm).cross_section();
-    Consistency::Peak force, velocity;
-    if (!prm.boundary.applied_force_ids.empty())
-      force = Consistency::peak_over_run(prm,
-                                         prm.boundary.applied_force_expression,
-                                         prm.boundary.applied_force_constants,
-                                         "Boundary conditions/Applied force",
-                                         t,
-                                         false);
-    if (!prm.boundary.prescribed_velocity_ids.empty())
-      velocity = Consistency::peak_over_run(prm,
-                                            prm.boundary.prescribed_velocity_expression,
-                                            prm.boundary.prescribed_velocity_constants,
-                                            "Boundary conditions/Prescribed velocity",
-                                            t,
-                                            true);
+    const Parameters &prm           = access.parameters;
+    const double      t             = n * dt;
+    const auto        section       = Consistency::body_size(prm).cross_section();
+    const auto [force, velocity]    = load_peaks(prm, t);
     const double       force_strain = force.magnitude / (material.youngs_modulus * section);
     const double       stable       = access.solver.stable_time_step();
     const double       critical     = stable / access.parameters.solver.courant_factor;
