@@ -12,7 +12,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <wheelrail/mesh/geometry.h>
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/elastic_operator.h>
 
@@ -40,7 +40,7 @@ main(int argc, char **argv)
   parameters.parse(prm, "point_mass_01_case.prm");
 
   parallel::distributed::Triangulation<dim> triangulation(MPI_COMM_WORLD);
-  Geometry::build(parameters.geometry, "bar", triangulation);
+  Geometry::build(*parameters.geometry_model, triangulation);
   triangulation.begin_active()->set_refine_flag();
   std::next(triangulation.begin_active(), 5)->set_refine_flag();
   triangulation.execute_coarsening_and_refinement();

@@ -8,6 +8,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/mesh/cell_estimate.h>
 #include <wheelrail/mesh/refinement.h>
 
 #include <unistd.h>
@@ -60,7 +61,12 @@ namespace WheelRail
 
 
 
-      /** "a, b, c" of a list of three cell counts. */
+    } // namespace
+
+
+
+    namespace internal
+    {
       std::string
       cell_list(const std::vector<unsigned int> &n)
       {
@@ -72,7 +78,6 @@ namespace WheelRail
 
 
 
-      /** Product of a list of cell counts, in double (no overflow). */
       double
       product(const std::vector<unsigned int> &n)
       {
@@ -84,32 +89,6 @@ namespace WheelRail
 
 
 
-      /** Coarse cells of the wheel and of the rail head, as
-       *  build_wheel_and_rail() divides them without alignment. */
-      std::pair<double, double>
-      wheel_and_rail_coarse_cells(const GeometryParameters &p)
-      {
-        const double coarse  = effective_coarse_size(p);
-        const double R       = p.wheel_radius;
-        double       n_theta = p.wheel_circumferential_cells;
-        if (n_theta == 0)
-          n_theta = 4 * std::ceil(2 * M_PI * R / (4 * 4 * coarse));
-        n_theta              = std::max(n_theta, 8.);
-        const double d_theta = 2 * M_PI / n_theta;
-        const double n_radial =
-          std::max(1., std::round(std::log(p.bore_radius / R) / std::log(1 - d_theta)));
-        const double n_y  = std::max(1., std::ceil(p.tread_width / (4 * coarse) - 1e-9));
-        const double rail = std::ceil((p.rail_end_x - p.rail_start_x) / coarse - 1e-9) *
-                            std::ceil(p.rail_head_width / coarse - 1e-9) *
-                            std::ceil(p.rail_head_height / coarse - 1e-9);
-        return {n_theta * n_y * n_radial, rail};
-      }
-    } // namespace
-
-
-
-    namespace internal
-    {
       /** Physical memory of the machines that run @p comm [bytes]. */
       double
       physical_memory(const MPI_Comm comm)
@@ -157,49 +136,12 @@ namespace WheelRail
 
 
 
-      double
-      coarse_cell_estimate(const GeometryParameters &p, const std::string &geometry_type)
-      {
-        if (geometry_type == "bar")
-          return product(p.bar_cells);
-        if (geometry_type == "block on plate")
-          return product(p.plate_cells) + product(p.block_cells);
-        const auto [wheel, rail] = wheel_and_rail_coarse_cells(p);
-        return wheel + rail;
-      }
-
-
-
       void
-      check_coarse_cell_estimate(const GeometryParameters &p,
-                                 const std::string        &geometry_type,
-                                 const MPI_Comm            comm)
+      check_coarse_cell_estimate(const CoarseCellEstimate &estimate, const MPI_Comm comm)
       {
-        const double n = coarse_cell_estimate(p, geometry_type);
-        std::string  cause, remedy;
-        if (geometry_type == "bar")
-          {
-            cause = "Geometry/Bar/Cells = " + cell_list(p.bar_cells) + " make a bar of " +
-                    fmt(n, 3) + " cells";
-            remedy = "reduce Geometry/Bar/Cells.";
-          }
-        else if (geometry_type == "block on plate")
-          {
-            cause = "Geometry/Block on plate/Plate cells = " + cell_list(p.plate_cells) +
-                    " and Block cells = " + cell_list(p.block_cells) + " make " + fmt(n, 3) +
-                    " cells";
-            remedy = "reduce Geometry/Block on plate/Plate cells or Block cells.";
-          }
-        else
-          {
-            const auto [wheel, rail] = wheel_and_rail_coarse_cells(p);
-            cause = "Geometry/Mesh/Coarse cell size = " + fmt(p.coarse_cell_size) +
-                    " m would divide the wheel and rail into about " + fmt(n, 2) +
-                    " coarse cells (wheel " + fmt(wheel, 2) + ", rail " + fmt(rail, 2) +
-                    ") before any refinement";
-            remedy = "increase Geometry/Mesh/Coarse cell size (the local refinement "
-                     "reaches Minimum cell size where it is needed).";
-          }
+        const double       n      = estimate.n_cells;
+        std::string        cause  = estimate.cause;
+        const std::string &remedy = estimate.remedy;
         // every rank holds the whole coarse mesh
         const double ranks  = Utilities::MPI::n_mpi_processes(comm);
         const double needed = n * bytes_per_cell;

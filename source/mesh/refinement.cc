@@ -12,6 +12,7 @@
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
+#include <wheelrail/mesh/cell_estimate.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/mesh/refinement.h>
 
@@ -247,9 +248,9 @@ namespace WheelRail
 
 
     ZoneCells
-    zone_cells(const GeometryParameters                        &p,
-               const types::material_id                         material,
-               const parallel::distributed::Triangulation<dim> &triangulation)
+    internal::zone_cells(const GeometryParameters                        &p,
+                         const types::material_id                         material,
+                         const parallel::distributed::Triangulation<dim> &triangulation)
     {
       ZoneCells             z;
       const RefinementBoxes b = refinement_boxes(p, material);

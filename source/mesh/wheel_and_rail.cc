@@ -69,22 +69,21 @@ namespace WheelRail
         x.push_back(b);
         return x;
       }
-    } // namespace
 
 
 
-    namespace internal
-    {
+      /**
+       * The wheel as one closed (theta, y, radial) block: theta from the
+       * lowest point towards +x in equal steps, radial index from the tread
+       * inwards in geometric layers; coarse cells of about 4 x the coarse
+       * size @p coarse at the tread, refined later.
+       */
       void
-      build_wheel_and_rail(const GeometryParameters   &p,
-                           std::vector<Point<dim>>    &vertices,
-                           std::vector<CellData<dim>> &cells)
+      add_wheel_uniform(const GeometryParameters   &p,
+                        const double                coarse,
+                        std::vector<Point<dim>>    &vertices,
+                        std::vector<CellData<dim>> &cells)
       {
-        const double coarse = effective_coarse_size(p);
-
-        // Wheel: (theta, y, radial) block, theta from the lowest point
-        // towards +x, radial index from the tread inwards; coarse cells of
-        // about 4 x the coarse size at the tread, refined later.
         const double R       = p.wheel_radius;
         unsigned int n_theta = p.wheel_circumferential_cells;
         if (n_theta == 0)
@@ -99,127 +98,182 @@ namespace WheelRail
         const unsigned int n_y =
           std::max<unsigned int>(1, std::ceil(p.tread_width / (4 * coarse) - 1e-9));
         const Point<dim> centre = wheel_centre(p);
-        const bool       align  = p.align_zone && p.zone_length > 0;
-        if (!align)
-          add_block(
-            n_theta,
-            n_y,
-            n_radial,
-            true,
-            MaterialIds::wheel,
-            [&](unsigned int i, unsigned int j, unsigned int k) {
-              const double r = R * std::pow(ratio, k);
-              const double t = i * d_theta;
-              return Point<dim>(centre[0] + r * std::sin(t),
-                                -0.5 * p.tread_width + j * p.tread_width / n_y,
-                                centre[2] - r * std::cos(t));
-            },
-            vertices,
-            cells);
-        else
-          {
-            // arc length s = R theta from the lowest point, one turn from
-            // the zone's arc on (chart coordinates, see refinement_boxes())
-            const double        hw = 4 * coarse, sO = -p.wheel_centre_x;
-            const double        w = p.zone_half_width, turn = 2 * M_PI * R;
-            std::vector<double> s = aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
-                                                  sO - 0.5 * p.zone_length + 0.5 * turn,
-                                                  sO - 0.5 * p.zone_length,
-                                                  sO + 0.5 * p.zone_length,
-                                                  hw);
-            s.pop_back(); // periodic: the last line is the first
-            // the lateral lines half a zone cell off the rail's (see the
-            // rail below): symmetric about y = 0, at +-h_min / 2, ...
-            const double              shift = 0.5 * p.h_min;
-            const std::vector<double> y =
-              aligned_lines(-0.5 * p.tread_width, 0.5 * p.tread_width, -w + shift, w + shift, hw);
-            // radii: the top layer hw thick over the zone's depth, then
-            // geometric layers of about square cells down to the bore
-            std::vector<double> r     = {R};
-            const unsigned int  n_top = std::max(1., std::ceil(p.zone_depth / hw - 1e-9));
-            for (unsigned int k = 1; k <= n_top; ++k)
-              r.push_back(R - hw * k);
-            const double       r1      = r.back();
-            const double       d_mean  = 2 * M_PI / s.size();
-            const unsigned int n_lower = std::max<unsigned int>(
-              1, std::round(std::log(p.bore_radius / r1) / std::log(1 - d_mean)));
-            for (unsigned int k = 1; k <= n_lower; ++k)
-              r.push_back(k == n_lower ? p.bore_radius :
-                                         r1 * std::pow(p.bore_radius / r1, double(k) / n_lower));
-            add_block(
-              s.size(),
-              y.size() - 1,
-              r.size() - 1,
-              true,
-              MaterialIds::wheel,
-              [&](unsigned int i, unsigned int j, unsigned int k) {
-                const double t = s[i] / R;
-                return Point<dim>(centre[0] + r[k] * std::sin(t),
-                                  y[j],
-                                  centre[2] - r[k] * std::cos(t));
-              },
-              vertices,
-              cells);
-          }
+        add_block(
+          n_theta,
+          n_y,
+          n_radial,
+          true,
+          MaterialIds::wheel,
+          [&](unsigned int i, unsigned int j, unsigned int k) {
+            const double r = R * std::pow(ratio, k);
+            const double t = i * d_theta;
+            return Point<dim>(centre[0] + r * std::sin(t),
+                              -0.5 * p.tread_width + j * p.tread_width / n_y,
+                              centre[2] - r * std::cos(t));
+          },
+          vertices,
+          cells);
+      }
 
-        // Rail head: box (x, y, zeta) pushed onto the arc top.
-        const RailChart    chart(p.rail_head_height, p.rail_profile_radius);
+
+
+      /**
+       * The wheel with coarse lines aligned with the solution zone (Align
+       * coarse cells with zone): arc length s = R theta from the lowest
+       * point, one turn from the zone's arc on (chart coordinates, see
+       * refinement_boxes()); lateral lines half a zone cell off the
+       * rail's; radii in a top layer over the zone's depth, then geometric
+       * layers down to the bore.
+       */
+      void
+      add_wheel_aligned(const GeometryParameters   &p,
+                        const double                coarse,
+                        std::vector<Point<dim>>    &vertices,
+                        std::vector<CellData<dim>> &cells)
+      {
+        const double        R      = p.wheel_radius;
+        const Point<dim>    centre = wheel_centre(p);
+        const double        hw = 4 * coarse, sO = -p.wheel_centre_x;
+        const double        w = p.zone_half_width, turn = 2 * M_PI * R;
+        std::vector<double> s = aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
+                                              sO - 0.5 * p.zone_length + 0.5 * turn,
+                                              sO - 0.5 * p.zone_length,
+                                              sO + 0.5 * p.zone_length,
+                                              hw);
+        s.pop_back(); // periodic: the last line is the first
+        // the lateral lines half a zone cell off the rail's (see the
+        // rail's lines): symmetric about y = 0, at +-h_min / 2, ...
+        const double              shift = 0.5 * p.h_min;
+        const std::vector<double> y =
+          aligned_lines(-0.5 * p.tread_width, 0.5 * p.tread_width, -w + shift, w + shift, hw);
+        // radii: the top layer hw thick over the zone's depth, then
+        // geometric layers of about square cells down to the bore
+        std::vector<double> r     = {R};
+        const unsigned int  n_top = std::max(1., std::ceil(p.zone_depth / hw - 1e-9));
+        for (unsigned int k = 1; k <= n_top; ++k)
+          r.push_back(R - hw * k);
+        const double       r1     = r.back();
+        const double       d_mean = 2 * M_PI / s.size();
+        const unsigned int n_lower =
+          std::max<unsigned int>(1,
+                                 std::round(std::log(p.bore_radius / r1) / std::log(1 - d_mean)));
+        for (unsigned int k = 1; k <= n_lower; ++k)
+          r.push_back(k == n_lower ? p.bore_radius :
+                                     r1 * std::pow(p.bore_radius / r1, double(k) / n_lower));
+        add_block(
+          s.size(),
+          y.size() - 1,
+          r.size() - 1,
+          true,
+          MaterialIds::wheel,
+          [&](unsigned int i, unsigned int j, unsigned int k) {
+            const double t = s[i] / R;
+            return Point<dim>(centre[0] + r[k] * std::sin(t), y[j], centre[2] - r[k] * std::cos(t));
+          },
+          vertices,
+          cells);
+      }
+
+
+
+      /** The rail head as one box (x, y, zeta) of equal cells of about the
+       *  coarse size @p coarse, pushed onto the arc top by @p chart. */
+      void
+      add_rail_uniform(const GeometryParameters   &p,
+                       const double                coarse,
+                       const RailChart            &chart,
+                       std::vector<Point<dim>>    &vertices,
+                       std::vector<CellData<dim>> &cells)
+      {
         const double       L  = p.rail_end_x - p.rail_start_x;
         const unsigned int nx = std::ceil(L / coarse - 1e-9);
         const unsigned int ny = std::ceil(p.rail_head_width / coarse - 1e-9);
         const unsigned int nz = std::ceil(p.rail_head_height / coarse - 1e-9);
-        if (!align)
-          add_block(
-            nx,
-            ny,
-            nz,
-            false,
-            MaterialIds::rail,
-            [&](unsigned int i, unsigned int j, unsigned int k) {
-              return chart.push_forward(
-                Point<dim>(p.rail_start_x + i * L / nx,
-                           -0.5 * p.rail_head_width + j * p.rail_head_width / ny,
-                           -p.rail_head_height + k * p.rail_head_height / nz));
-            },
-            vertices,
-            cells);
+        add_block(
+          nx,
+          ny,
+          nz,
+          false,
+          MaterialIds::rail,
+          [&](unsigned int i, unsigned int j, unsigned int k) {
+            return chart.push_forward(
+              Point<dim>(p.rail_start_x + i * L / nx,
+                         -0.5 * p.rail_head_width + j * p.rail_head_width / ny,
+                         -p.rail_head_height + k * p.rail_head_height / nz));
+          },
+          vertices,
+          cells);
+      }
+
+
+
+      /** The rail head with coarse lines aligned with the solution zone
+       *  (Align coarse cells with zone), pushed onto the arc top by
+       *  @p chart. */
+      void
+      add_rail_aligned(const GeometryParameters   &p,
+                       const double                coarse,
+                       const RailChart            &chart,
+                       std::vector<Point<dim>>    &vertices,
+                       std::vector<CellData<dim>> &cells)
+      {
+        // on the arc top a lateral edge is longer than its chart
+        // length (slope s at the aligned block's side): cells of
+        // coarse / sqrt(1 + s^2) refine onto at most h_min there
+        const double       w     = p.zone_half_width;
+        const unsigned int n_w   = std::max(1., std::ceil(2 * w / coarse - 1e-9));
+        const double       side  = std::min(0.5 * n_w * coarse, 0.5 * p.rail_head_width);
+        const double       rho   = p.rail_profile_radius;
+        const double       slope = side / std::sqrt(rho * rho - side * side);
+        const double       h     = coarse / std::sqrt(1 + slope * slope) * (1 - 1e-9);
+        // Wheel (slave) and rail (master) nodes must not coincide: with
+        // equal grids each slave force lands on one master node, and
+        // the pressure takes the one-point elements' checkerboard mode
+        // (measured on the paper case: +-300 MPa from node to node,
+        // peak 1,850 MPa against Hertz 1,385). Across, the wheel's lines
+        // lie half a cell off the rail's; along x, where rolling moves
+        // the one over the other, the rail's cells are 4 % shorter, so
+        // that the offsets run through a whole cell every 25 nodes.
+        const std::vector<double> x = aligned_lines(
+          p.rail_start_x, p.rail_end_x, -0.5 * p.zone_length, 0.5 * p.zone_length, 0.96 * h);
+        const std::vector<double> y =
+          aligned_lines(-0.5 * p.rail_head_width, 0.5 * p.rail_head_width, -w, w, h);
+        const std::vector<double> z = aligned_lines(-p.rail_head_height, 0, -p.zone_depth, 0, h);
+        add_block(
+          x.size() - 1,
+          y.size() - 1,
+          z.size() - 1,
+          false,
+          MaterialIds::rail,
+          [&](unsigned int i, unsigned int j, unsigned int k) {
+            return chart.push_forward(Point<dim>(x[i], y[j], z[k]));
+          },
+          vertices,
+          cells);
+      }
+    } // namespace
+
+
+
+    namespace internal
+    {
+      void
+      build_wheel_and_rail(const GeometryParameters   &p,
+                           std::vector<Point<dim>>    &vertices,
+                           std::vector<CellData<dim>> &cells)
+      {
+        const double coarse = effective_coarse_size(p);
+        const bool   align  = p.align_zone && p.zone_length > 0;
+        // the wheel's cells first, then the rail's
+        if (align)
+          add_wheel_aligned(p, coarse, vertices, cells);
         else
-          {
-            // on the arc top a lateral edge is longer than its chart
-            // length (slope s at the aligned block's side): cells of
-            // coarse / sqrt(1 + s^2) refine onto at most h_min there
-            const double       w     = p.zone_half_width;
-            const unsigned int n_w   = std::max(1., std::ceil(2 * w / coarse - 1e-9));
-            const double       side  = std::min(0.5 * n_w * coarse, 0.5 * p.rail_head_width);
-            const double       rho   = p.rail_profile_radius;
-            const double       slope = side / std::sqrt(rho * rho - side * side);
-            const double       h     = coarse / std::sqrt(1 + slope * slope) * (1 - 1e-9);
-            // Wheel (slave) and rail (master) nodes must not coincide: with
-            // equal grids each slave force lands on one master node, and
-            // the pressure takes the one-point elements' checkerboard mode
-            // (measured on the paper case: +-300 MPa from node to node,
-            // peak 1,850 MPa against Hertz 1,385). Across, the wheel's lines
-            // lie half a cell off the rail's; along x, where rolling moves
-            // the one over the other, the rail's cells are 4 % shorter, so
-            // that the offsets run through a whole cell every 25 nodes.
-            const std::vector<double> x = aligned_lines(
-              p.rail_start_x, p.rail_end_x, -0.5 * p.zone_length, 0.5 * p.zone_length, 0.96 * h);
-            const std::vector<double> y =
-              aligned_lines(-0.5 * p.rail_head_width, 0.5 * p.rail_head_width, -w, w, h);
-            const std::vector<double> z =
-              aligned_lines(-p.rail_head_height, 0, -p.zone_depth, 0, h);
-            add_block(
-              x.size() - 1,
-              y.size() - 1,
-              z.size() - 1,
-              false,
-              MaterialIds::rail,
-              [&](unsigned int i, unsigned int j, unsigned int k) {
-                return chart.push_forward(Point<dim>(x[i], y[j], z[k]));
-              },
-              vertices,
-              cells);
-          }
+          add_wheel_uniform(p, coarse, vertices, cells);
+        const RailChart chart(p.rail_head_height, p.rail_profile_radius);
+        if (align)
+          add_rail_aligned(p, coarse, chart, vertices, cells);
+        else
+          add_rail_uniform(p, coarse, chart, vertices, cells);
       }
     } // namespace internal
   }   // namespace Geometry

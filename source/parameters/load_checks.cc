@@ -9,6 +9,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/function_parser.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/parameters/consistency.h>
 #include <wheelrail/simulator/format.h>
@@ -37,30 +38,8 @@ namespace WheelRail
       std::pair<Point<3>, Point<3>>
       bounding_box(const Parameters &p)
       {
-        const GeometryParameters                  &g = p.geometry;
-        std::vector<std::pair<Point<3>, Point<3>>> boxes;
-        if (p.problem.geometry == "bar")
-          boxes.push_back({Point<3>(0, -0.5 * g.bar_width, -0.5 * g.bar_height),
-                           Point<3>(g.bar_length, 0.5 * g.bar_width, 0.5 * g.bar_height)});
-        else if (p.problem.geometry == "block on plate")
-          {
-            boxes.push_back({Point<3>(0, -0.5 * g.plate_size[1], -g.plate_size[2]),
-                             Point<3>(g.plate_size[0], 0.5 * g.plate_size[1], 0)});
-            boxes.push_back({Point<3>(g.block_x, -0.5 * g.block_size[1], g.block_gap),
-                             Point<3>(g.block_x + g.block_size[0],
-                                      0.5 * g.block_size[1],
-                                      g.block_gap + g.block_size[2])});
-          }
-        else
-          {
-            boxes.push_back(
-              {Point<3>(g.rail_start_x, -0.5 * g.rail_head_width, -g.rail_head_height),
-               Point<3>(g.rail_end_x, 0.5 * g.rail_head_width, 0)});
-            const double zc = g.wheel_centre_z(), R = g.wheel_radius;
-            boxes.push_back({Point<3>(g.wheel_centre_x - R, -0.5 * g.tread_width, zc - R),
-                             Point<3>(g.wheel_centre_x + R, 0.5 * g.tread_width, zc + R)});
-          }
-        auto box = boxes.front();
+        const std::vector<Geometry::Box> boxes = p.geometry_model->bounding_boxes();
+        auto                             box   = boxes.front();
         for (const auto &b : boxes)
           for (unsigned int d = 0; d < 3; ++d)
             {
@@ -278,8 +257,8 @@ namespace WheelRail
       BodySize size{0, 0};
       for (unsigned int d = 0; d < 3; ++d)
         size.extent = std::max(size.extent, hi[d] - lo[d]);
-      for (const Geometry::Body &body : Geometry::bodies(p.problem.geometry))
-        size.volume += Geometry::exact_volume(p.geometry, body.material);
+      for (const Geometry::Body &body : p.geometry_model->bodies())
+        size.volume += p.geometry_model->exact_volume(body.material);
       return size;
     }
 

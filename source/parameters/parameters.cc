@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/parameters/consistency.h>
 #include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
@@ -40,6 +41,7 @@ namespace WheelRail
     ParameterFile::parse(prm, filename);
     problem.parse_parameters(prm);
     geometry.parse_parameters(prm);
+    geometry_model = Geometry::GeometryModel::create(problem.geometry, geometry, prm);
     material.parse_parameters(prm);
     solver.parse_parameters(prm);
     boundary.parse_parameters(prm);

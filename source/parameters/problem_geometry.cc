@@ -7,6 +7,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/parameters/entry_flags.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/parameters/vector_entry.h>
@@ -28,7 +29,7 @@ namespace WheelRail
     const EntryFlags flags("Problem");
     prm.declare_entry("Geometry",
                       "wheel and rail",
-                      Patterns::Selection("wheel and rail|bar|block on plate"),
+                      Patterns::Selection(Geometry::GeometryModel::names()),
                       "Bodies to mesh: 'wheel and rail' is the model of the "
                       "paper (SPEC 1); 'bar' is a straight prismatic bar "
                       "(subsection Geometry/Bar) and 'block on plate' a block "
@@ -284,6 +285,8 @@ namespace WheelRail
       prm.leave_subsection();
     }
     prm.leave_subsection();
+    // the entries of the geometries that declare their own
+    Geometry::GeometryModel::declare_parameters(prm);
   }
 
 

@@ -3,6 +3,7 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/postprocess/statistics.h>
@@ -71,10 +72,10 @@ namespace WheelRail
         add("omega [rad/s]", access.wheelset->angular_velocity());
         add("creepage [-]", access.wheelset->creepage());
       }
-    else if (access.parameters.problem.geometry == "wheel and rail")
+    else if (access.parameters.geometry_model->has_wheel())
       {
         const Tensor<1, dim> ub = access.solver.bore_displacement();
-        const Point<dim>     c  = Geometry::wheel_centre(access.parameters.geometry);
+        const Point<dim>     c  = access.parameters.geometry_model->wheel_centre();
         add("wheel x [m]", c[0] + ub[0]);
         add("axle z [m]", c[2] + ub[2]);
       }

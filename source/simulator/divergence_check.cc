@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/parameters/consistency.h>
 #include <wheelrail/simulator/divergence_check.h>
@@ -138,7 +139,8 @@ namespace WheelRail
     if (my_rank == teller && worst != numbers::invalid_unsigned_int)
       {
         const Point<dim> &X    = access.solver.support_points()[worst];
-        const char       *body = Geometry::body_name(access.solver.dof_material(worst));
+        const char       *body =
+          access.parameters.geometry_model->body_name(access.solver.dof_material(worst));
         where << (std::isfinite(global_worst) ? "fastest node" : "first non-finite value")
               << " at X = (" << fmt(X[0] * 1e3) << ", " << fmt(X[1] * 1e3) << ", "
               << fmt(X[2] * 1e3) << ") mm of the " << body << ", component "

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <wheelrail/base/stop_signal.h>
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 namespace WheelRail
@@ -148,10 +150,11 @@ namespace WheelRail
     if (parameters.output.resume)
       check_checkpoint();
 
-    Geometry::build(parameters.geometry, parameters.problem.geometry, triangulation);
+    const Geometry::GeometryModel &geometry = *parameters.geometry_model;
+    Geometry::build(geometry, triangulation);
     solver = std::make_unique<ExplicitSolver>(parameters, triangulation);
     solver->setup();
-    if (parameters.contact.enabled && parameters.problem.geometry != "bar")
+    if (parameters.contact.enabled && geometry.has_contact())
       {
         contact = std::make_unique<PenaltyContact>(parameters.contact,
                                                    parameters.material,
@@ -159,12 +162,11 @@ namespace WheelRail
         contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->point_mass());
         solver->attach_contact(contact.get());
       }
-    if (parameters.problem.geometry == "wheel and rail" &&
-        parameters.boundary.wheel_bore == "rigid axle")
+    if (geometry.has_wheel() && parameters.boundary.wheel_bore == "rigid axle")
       {
         wheelset = std::make_unique<Wheelset>(parameters.wheelset,
                                               parameters.solver,
-                                              Geometry::wheel_centre(parameters.geometry));
+                                              geometry.wheel_centre());
         solver->attach_wheelset(wheelset.get());
       }
     access = std::make_unique<SimulatorAccess>(SimulatorAccess{parameters,
@@ -270,6 +272,49 @@ namespace WheelRail
 
 
 
+  namespace
+  {
+    /** The setup summary's lines on the bodies of @p geometry: the cells
+     *  in each solution zone, and each body's lumped mass against rho
+     *  times its mesh volume and its exact volume. */
+    void
+    print_bodies(const ConditionalOStream                        &pcout,
+                 const Geometry::GeometryModel                   &geometry,
+                 const ExplicitSolver                            &solver,
+                 const parallel::distributed::Triangulation<dim> &triangulation,
+                 const MaterialParameters                        &material)
+    {
+      for (const Geometry::Body &body : geometry.bodies())
+        if (const std::optional<Geometry::ZoneCells> z =
+              geometry.zone_cells(body.material, triangulation))
+          {
+            pcout << "  solution zone, " << std::left << std::setw(5) << body.name << std::right
+                  << "        : ";
+            if (z->n_cells == 0)
+              pcout << "none" << std::endl;
+            else
+              pcout << z->n_cells << " cells, longest edge " << fmt(z->max_longest_edge * 1e3)
+                    << " mm" << std::endl;
+          }
+
+      pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
+      const double rho = material.density;
+      for (const Geometry::Body &body : geometry.bodies())
+        {
+          const double m      = solver.total_mass(body.material);
+          const double m_mesh = rho * solver.mesh_volume(body.material);
+          const double m_true = rho * geometry.exact_volume(body.material);
+          pcout << "  " << std::left << std::setw(6) << body.name << std::right << " lumped mass "
+                << fmt(m, 8) << " kg, rho x mesh volume " << fmt(m_mesh, 8) << " kg (rel. error "
+                << fmt(std::abs(m - m_mesh) / m_mesh, 1) << "), rho x exact volume "
+                << fmt(m_true, 8) << " kg (rel. error " << fmt(std::abs(m - m_true) / m_true, 3)
+                << ")" << std::endl;
+        }
+    }
+  } // namespace
+
+
+
   void
   Simulator::print_setup_summary()
   {
@@ -285,32 +330,7 @@ namespace WheelRail
           << "  smallest L_e = V/A_max       : " << fmt(q.min_length * 1e3) << " mm" << std::endl
           << "  smallest scaled Jacobian     : " << fmt(q.min_scaled_jacobian, 4) << std::endl
           << "  largest aspect ratio         : " << fmt(q.max_aspect_ratio, 4) << std::endl;
-    if (parameters.problem.geometry == "wheel and rail")
-      for (const Geometry::Body &body : Geometry::bodies(parameters.problem.geometry))
-        {
-          const Geometry::ZoneCells z =
-            Geometry::zone_cells(parameters.geometry, body.material, triangulation);
-          pcout << "  solution zone, " << std::left << std::setw(5) << body.name << std::right
-                << "        : ";
-          if (z.n_cells == 0)
-            pcout << "none" << std::endl;
-          else
-            pcout << z.n_cells << " cells, longest edge " << fmt(z.max_longest_edge * 1e3) << " mm"
-                  << std::endl;
-        }
-
-    pcout << "Mass (lumped, condensed over hanging nodes)" << std::endl;
-    const double rho = parameters.material.density;
-    for (const Geometry::Body &body : Geometry::bodies(parameters.problem.geometry))
-      {
-        const double m      = solver->total_mass(body.material);
-        const double m_mesh = rho * solver->mesh_volume(body.material);
-        const double m_true = rho * Geometry::exact_volume(parameters.geometry, body.material);
-        pcout << "  " << std::left << std::setw(6) << body.name << std::right << " lumped mass "
-              << fmt(m, 8) << " kg, rho x mesh volume " << fmt(m_mesh, 8) << " kg (rel. error "
-              << fmt(std::abs(m - m_mesh) / m_mesh, 1) << "), rho x exact volume " << fmt(m_true, 8)
-              << " kg (rel. error " << fmt(std::abs(m - m_true) / m_true, 3) << ")" << std::endl;
-      }
+    print_bodies(pcout, *parameters.geometry_model, *solver, triangulation, parameters.material);
 
     const double dt = solver->time_step();
     pcout << "Time integration" << std::endl

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
@@ -46,6 +47,30 @@ namespace WheelRail
     {
       return parameters.solver.single_precision_geometry ? 5e-6 : 1e-10;
     }
+
+    /** The patch test's report: the exact stress @p Sx, the largest cell
+     *  stress error @p stress_error relative to it, the largest interior
+     *  nodal force relative to the largest boundary one @p force_ratio,
+     *  and the verdict of both against @p tol. */
+    void
+    report_patch_test(const ConditionalOStream &pcout,
+                      const Tensor<2, dim>     &Sx,
+                      const double              stress_error,
+                      const double              force_ratio,
+                      const double              tol)
+    {
+      pcout << "Patch test: u = G X on every node" << std::endl
+            << "  exact 2nd Piola-Kirchhoff stress |S| : " << fmt(Sx.norm() * 1e-6) << " MPa"
+            << std::endl
+            << "  S_xx, S_yy, S_zz, S_xy, S_yz, S_xz   : " << fmt(Sx[0][0] * 1e-6) << " "
+            << fmt(Sx[1][1] * 1e-6) << " " << fmt(Sx[2][2] * 1e-6) << " " << fmt(Sx[0][1] * 1e-6)
+            << " " << fmt(Sx[1][2] * 1e-6) << " " << fmt(Sx[0][2] * 1e-6) << " MPa" << std::endl
+            << "  largest cell stress error / |S|      : " << fmt(stress_error, 1) << std::endl
+            << "  largest interior nodal force / largest boundary nodal force : "
+            << fmt(force_ratio, 1) << std::endl
+            << "  both within " << fmt(tol) << "                : "
+            << Verification::verdict(stress_error < tol && force_ratio < tol) << std::endl;
+    }
   } // namespace
 
 
@@ -53,9 +78,8 @@ namespace WheelRail
   void
   Simulator::run_static_check()
   {
-    const VerificationParameters &vp  = parameters.verification;
-    const bool                    bar = parameters.problem.geometry == "bar";
-    const double                  E   = parameters.material.youngs_modulus;
+    const VerificationParameters &vp = parameters.verification;
+    const double                  E  = parameters.material.youngs_modulus;
     VectorType                    force;
 
     if (parameters.problem.mode == "patch test")
@@ -83,35 +107,27 @@ namespace WheelRail
           (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
             std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
                      std::abs(force.local_element(i)));
-        max_interior     = Utilities::MPI::max(max_interior, mpi_communicator);
-        max_boundary     = Utilities::MPI::max(max_boundary, mpi_communicator);
-        const double tol = static_check_tolerance(parameters);
-        pcout << "Patch test: u = G X on every node" << std::endl
-              << "  exact 2nd Piola-Kirchhoff stress |S| : " << fmt(Sx.norm() * 1e-6) << " MPa"
-              << std::endl
-              << "  S_xx, S_yy, S_zz, S_xy, S_yz, S_xz   : " << fmt(Sx[0][0] * 1e-6) << " "
-              << fmt(Sx[1][1] * 1e-6) << " " << fmt(Sx[2][2] * 1e-6) << " " << fmt(Sx[0][1] * 1e-6)
-              << " " << fmt(Sx[1][2] * 1e-6) << " " << fmt(Sx[0][2] * 1e-6) << " MPa" << std::endl
-              << "  largest cell stress error / |S|      : " << fmt(max_stress_error, 1)
-              << std::endl
-              << "  largest interior nodal force / largest boundary nodal force : "
-              << fmt(max_interior / max_boundary, 1) << std::endl
-              << "  both within " << fmt(tol) << "                : "
-              << Verification::verdict(max_stress_error < tol && max_interior / max_boundary < tol)
-              << std::endl;
+        max_interior = Utilities::MPI::max(max_interior, mpi_communicator);
+        max_boundary = Utilities::MPI::max(max_boundary, mpi_communicator);
+        report_patch_test(pcout,
+                          Sx,
+                          max_stress_error,
+                          max_interior / max_boundary,
+                          static_check_tolerance(parameters));
         return;
       }
 
     // rigid rotation of the wheel (or the bar) about its centre
-    const Point<dim>     centre = bar ? Point<dim>(0.5 * parameters.geometry.bar_length, 0, 0) :
-                                        Geometry::wheel_centre(parameters.geometry);
+    const std::pair<types::material_id, Point<dim>> rotating =
+      parameters.geometry_model->rotating_body();
+    const Point<dim>     centre = rotating.second;
     const Tensor<2, dim> R      = rotation_matrix(vp.rotation_axis, vp.rotation_angle);
     solver->set_displacement(
       [&](const Point<dim> &X) {
         const Tensor<1, dim> r = X - centre;
         return R * r - r;
       },
-      bar ? Geometry::MaterialIds::bar : Geometry::MaterialIds::wheel);
+      rotating.first);
     solver->compute_internal_force(force);
     double     max_vm   = 0;
     const auto stresses = solver->cell_stresses();
@@ -139,7 +155,7 @@ namespace WheelRail
   void
   Simulator::run_static_contact()
   {
-    AssertThrow(parameters.problem.geometry == "wheel and rail" && contact,
+    AssertThrow(parameters.geometry_model->has_wheel() && contact,
                 ExcMessage("Problem/Mode = static contact needs Problem/Geometry = wheel and "
                            "rail and Contact/Enabled = true."));
     Timer               timer;

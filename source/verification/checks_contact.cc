@@ -1,3 +1,4 @@
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/checks.h>
@@ -22,8 +23,8 @@ namespace WheelRail
       {
         const VerificationParameters &vp      = in.access.parameters.verification;
         const std::vector<Sample>    &samples = in.samples.samples();
-        AssertThrow(in.access.parameters.problem.geometry == "block on plate" &&
-                      in.access.contact && samples.size() > 4,
+        AssertThrow(in.access.parameters.geometry_model->is_block_on_plate() && in.access.contact &&
+                      samples.size() > 4,
                     ExcMessage("Verification/Check = " + vp.check +
                                " needs Problem/Geometry = block on plate, contact and at least "
                                "five statistics rows."));

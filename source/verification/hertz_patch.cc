@@ -4,6 +4,7 @@
  * pressures, its report, and the static solve's comparison.
  */
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/expected_errors.h>
 #include <wheelrail/verification/hertz.h>
@@ -41,10 +42,10 @@ namespace WheelRail
       // curvatures 1/(2 R_w) along the rail, 1/(2 R_rail) across it;
       // hertz_contact() takes the smaller first, so a crown flatter than the
       // wheel swaps the semi-axes back to a along x, b along y
-      const GeometryParameters &g      = parameters.geometry;
-      const double              along  = 0.5 / g.wheel_radius;
-      const double              across = 0.5 / g.rail_profile_radius;
-      const double              E_star = effective_modulus(parameters.material);
+      const Geometry::ContactRadii r      = parameters.geometry_model->contact_radii();
+      const double                 along  = 0.5 / r.wheel_rolling;
+      const double                 across = 0.5 / r.rail_crown;
+      const double                 E_star = effective_modulus(parameters.material);
       if (along <= across)
         return hertz_contact(along, across, normal_force, E_star);
       HertzSolution h = hertz_contact(across, along, normal_force, E_star);

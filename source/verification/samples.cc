@@ -1,3 +1,4 @@
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/verification/samples.h>
@@ -26,7 +27,7 @@ namespace WheelRail
   {
     if (!access.contact)
       return;
-    const bool block = access.parameters.problem.geometry == "block on plate";
+    const bool block = access.parameters.geometry_model->is_block_on_plate();
     Sample     s;
     s.t = e.time;
     if (block)

@@ -1,8 +1,8 @@
 /**
  * @file mesh/coarse_mesh.h
  * The coarse meshes of the geometries, before refinement: structured
- * blocks of hexahedra, the wheel and rail, the bar and the block on a
- * plate, and their boundary ids.
+ * blocks of hexahedra (the bar and the block on a plate are made of them
+ * in source/geometry/) and the wheel and rail.
  */
 #ifndef wheelrail_mesh_coarse_mesh_h
 #define wheelrail_mesh_coarse_mesh_h
@@ -66,29 +66,6 @@ namespace WheelRail
       build_wheel_and_rail(const GeometryParameters   &p,
                            std::vector<Point<dim>>    &vertices,
                            std::vector<CellData<dim>> &cells);
-
-
-
-      /** The coarse mesh of the bar (blocks.cc). */
-      void
-      build_bar(const GeometryParameters   &p,
-                std::vector<Point<dim>>    &vertices,
-                std::vector<CellData<dim>> &cells);
-
-
-
-      /** The coarse mesh of the block on the plate (blocks.cc). */
-      void
-      build_block_on_plate(const GeometryParameters   &p,
-                           std::vector<Point<dim>>    &vertices,
-                           std::vector<CellData<dim>> &cells);
-
-
-
-      /** The boundary ids of Geometry::BoundaryIds on the coarse mesh
-       *  @p tria of any geometry. */
-      void
-      set_boundary_ids(const GeometryParameters &p, Triangulation<dim> &tria);
     } // namespace internal
   }   // namespace Geometry
 } // namespace WheelRail

@@ -1,17 +1,19 @@
 /**
  * @file mesh/geometry.h
- * Meshes of the wheel and the rail head (SPEC 1) and of the verification
- * bar, with their boundary and material ids, manifolds and local refinement.
+ * The ids that the geometry models give the mesh (boundary, material and
+ * manifold ids) and the wheel centre; the models themselves are
+ * geometry/interface.h.
  */
 #ifndef wheelrail_mesh_geometry_h
 #define wheelrail_mesh_geometry_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
 
 #include <deal.II/distributed/tria.h>
 
 #include <wheelrail/parameters/parameters.h>
 
-#include <string>
-#include <vector>
 
 namespace WheelRail
 {
@@ -50,23 +52,6 @@ namespace WheelRail
       constexpr types::material_id plate = 5;
     } // namespace MaterialIds
 
-    /** A body of a geometry: its material id and its name in the reports. */
-    struct Body
-    {
-      types::material_id material;
-      const char        *name;
-    };
-
-    /** The bodies of @p geometry_type ("wheel and rail", "bar" or "block on
-     *  plate"), in the order the reports list them. */
-    std::vector<Body>
-    bodies(const std::string &geometry_type);
-
-    /** The name of the body with material id @p material, whatever the
-     *  geometry ("unknown body" for an id of none). */
-    const char *
-    body_name(const types::material_id material);
-
     /** Manifold ids. */
     namespace ManifoldIds
     {
@@ -74,44 +59,10 @@ namespace WheelRail
       constexpr types::manifold_id rail  = 2; ///< box mapped to the arc top
     }                                         // namespace ManifoldIds
 
-    /**
-     * Build the coarse mesh of @p geometry_type ("wheel and rail", "bar" or
-     * "block on plate"),
-     * attach manifolds and refine locally as GeometryParameters says.
-     */
-    void
-    build(const GeometryParameters                  &parameters,
-          const std::string                         &geometry_type,
-          parallel::distributed::Triangulation<dim> &triangulation);
-
     /** Undeformed wheel centre. */
     Point<dim>
     wheel_centre(const GeometryParameters &parameters);
 
-    /** The cells of one body that reach into its solution zone. */
-    struct ZoneCells
-    {
-      /** Cells whose bounding box in the refinement's chart coordinates
-       *  shares a volume with the zone (all ranks). */
-      types::global_cell_index n_cells = 0;
-      /** Largest longest edge among them [m] (0 without such cells). */
-      double max_longest_edge = 0;
-    };
-
-    /**
-     * Count the cells of body @p material (wheel or rail) that reach into
-     * its solution zone and find the largest of them: a check that the
-     * whole zone is meshed at Minimum cell size whatever the grading.
-     * Collective over the triangulation's communicator.
-     */
-    ZoneCells
-    zone_cells(const GeometryParameters                        &parameters,
-               const types::material_id                         material,
-               const parallel::distributed::Triangulation<dim> &triangulation);
-
-    /** Exact volume of the body with material id @p material (analytic). */
-    double
-    exact_volume(const GeometryParameters &parameters, const types::material_id material);
   } // namespace Geometry
 } // namespace WheelRail
 

@@ -2,7 +2,7 @@
  * @file mesh/refinement.h
  * The local refinement of the wheel and rail towards the solution zone and
  * the rolling path, in the chart coordinates of each body (SPEC 1), and
- * the guard of the refined mesh's size.
+ * the cells in the solution zone.
  */
 #ifndef wheelrail_mesh_refinement_h
 #define wheelrail_mesh_refinement_h
@@ -11,12 +11,12 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <string>
 
 namespace WheelRail
 {
@@ -109,48 +109,14 @@ namespace WheelRail
 
 
 
-      /**
-       * Stop the run when the final cell count @p estimate of the
-       * refinement, estimated before cycle @p cycle, is more than deal.II
-       * numbers on a rank or needs more than the @p memory bytes of
-       * physical memory of the machines of @p comm.
-       */
-      void
-      check_cell_estimate(const GeometryParameters &p,
-                          const double              estimate,
-                          const unsigned int        cycle,
-                          const MPI_Comm            comm,
-                          const double              memory);
-
-
-
-      /** Physical memory of the machines that run @p comm [bytes]. */
-      double
-      physical_memory(const MPI_Comm comm);
-
-
-
-      /**
-       * The number of coarse cells that build() makes of geometry
-       * @p geometry_type, counted from the parameters without building
-       * them (the wheel's as for unaligned coarse lines: the aligned ones
-       * differ by a few cells).
-       */
-      double
-      coarse_cell_estimate(const GeometryParameters &p, const std::string &geometry_type);
-
-
-
-      /**
-       * Stop the run before its coarse mesh is built when the coarse mesh
-       * has more than the cells that wheelrail takes (every rank holds the
-       * whole coarse mesh) or needs more than the physical memory of the
-       * machines of @p comm.
-       */
-      void
-      check_coarse_cell_estimate(const GeometryParameters &p,
-                                 const std::string        &geometry_type,
-                                 const MPI_Comm            comm);
+      /** The cells of body @p material (wheel or rail) that reach into its
+       *  solution zone, and the largest of them: a check that the whole
+       *  zone is meshed at Minimum cell size whatever the grading.
+       *  Collective over the triangulation's communicator. */
+      ZoneCells
+      zone_cells(const GeometryParameters                        &p,
+                 const types::material_id                         material,
+                 const parallel::distributed::Triangulation<dim> &triangulation);
     } // namespace internal
   }   // namespace Geometry
 } // namespace WheelRail

@@ -33,7 +33,9 @@ namespace WheelRail
   /** What is computed and where it goes ("subsection Problem"). */
   struct ProblemParameters
   {
-    /** "wheel and rail" (the paper's model) or "bar" (verification bar). */
+    /** The geometry model's name: "wheel and rail" (the paper's model),
+     *  "bar" or "block on plate" (verification bodies); the names are
+     *  GeometryModel::names(). */
     std::string geometry;
     /** "explicit dynamics" or one of the static verification modes. */
     std::string mode;
@@ -344,6 +346,11 @@ namespace WheelRail
                        const std::string &variables,
                        const std::string &entry);
 
+  namespace Geometry
+  {
+    class GeometryModel;
+  }
+
   /** All parameters of a run. */
   struct Parameters
   {
@@ -358,6 +365,9 @@ namespace WheelRail
     WheelsetParameters     wheelset;
     OutputParameters       output;
     VerificationParameters verification;
+    /** The geometry model of Problem/Geometry, made by parse() from the
+     *  Geometry subsection (geometry/interface.h). */
+    std::shared_ptr<const Geometry::GeometryModel> geometry_model;
 
     static void
     declare_parameters(ParameterHandler &prm);
