@@ -16,6 +16,7 @@
 #include <wheelrail/solver/family_batch.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <limits>
 
@@ -97,6 +98,20 @@ namespace WheelRail
           }
       return true;
     }
+
+    /** Which DoF of the FESystem is component c of vertex a: [c][a]. */
+    using VertexDofs = std::array<std::array<unsigned int, 8>, dim>;
+    VertexDofs
+    vertex_dofs(const FiniteElement<dim> &fe)
+    {
+      VertexDofs dof_of;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto ci               = fe.system_to_component_index(i);
+          dof_of[ci.first][ci.second] = i;
+        }
+      return dof_of;
+    }
   } // namespace
 
 
@@ -104,13 +119,7 @@ namespace WheelRail
   void
   ElasticOperator::setup_node_data()
   {
-    // which DoF of the FESystem is component c of vertex a
-    unsigned int dof_of[dim][8];
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto ci               = fe.system_to_component_index(i);
-        dof_of[ci.first][ci.second] = i;
-      }
+    const VertexDofs dof_of = vertex_dofs(fe);
 
     const unsigned int n_local =
       vector_partitioner->locally_owned_size() + vector_partitioner->n_ghost_indices();
@@ -234,13 +243,7 @@ namespace WheelRail
     const double              c_wave = mat.wave_speed();
     const double              qm     = prm.solver.hourglass_coefficient;
 
-    // which DoF of the FESystem is component c of vertex a
-    unsigned int dof_of[dim][8];
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto ci               = fe.system_to_component_index(i);
-        dof_of[ci.first][ci.second] = i;
-      }
+    const VertexDofs dof_of = vertex_dofs(fe);
 
     n_cells   = triangulation.n_locally_owned_active_cells();
     n_batches = (n_cells + W - 1) / W;
