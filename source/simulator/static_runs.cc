@@ -51,6 +51,54 @@ namespace WheelRail
 
 
   void
+  Simulator::run_patch_test()
+  {
+    const VerificationParameters &vp = parameters.verification;
+    VectorType                    force;
+    const Tensor<2, dim> G = vp.displacement_gradient;
+    solver->set_displacement([&](const Point<dim> &X) { return G * X; });
+    solver->compute_internal_force(force);
+    const Tensor<2, dim> Sx =
+      StVenantKirchhoff::second_piola_kirchhoff_stress(StVenantKirchhoff::green_lagrange_strain(
+                                                         unit_symmetric_tensor<dim>() + G),
+                                                       parameters.material.lambda(),
+                                                       parameters.material.mu());
+    double     max_stress_error = 0;
+    const auto stresses         = solver->cell_stresses();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &s = stresses[cell->active_cell_index()];
+          max_stress_error =
+            std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
+        }
+    max_stress_error    = Utilities::MPI::max(max_stress_error, mpi_communicator);
+    double max_interior = 0, max_boundary = 0;
+    for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+      (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
+        std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
+                 std::abs(force.local_element(i)));
+    max_interior     = Utilities::MPI::max(max_interior, mpi_communicator);
+    max_boundary     = Utilities::MPI::max(max_boundary, mpi_communicator);
+    const double tol = static_check_tolerance(parameters);
+    pcout << "Patch test: u = G X on every node" << std::endl
+          << "  exact 2nd Piola-Kirchhoff stress |S| : " << fmt(Sx.norm() * 1e-6) << " MPa"
+          << std::endl
+          << "  S_xx, S_yy, S_zz, S_xy, S_yz, S_xz   : " << fmt(Sx[0][0] * 1e-6) << " "
+          << fmt(Sx[1][1] * 1e-6) << " " << fmt(Sx[2][2] * 1e-6) << " " << fmt(Sx[0][1] * 1e-6)
+          << " " << fmt(Sx[1][2] * 1e-6) << " " << fmt(Sx[0][2] * 1e-6) << " MPa" << std::endl
+          << "  largest cell stress error / |S|      : " << fmt(max_stress_error, 1)
+          << std::endl
+          << "  largest interior nodal force / largest boundary nodal force : "
+          << fmt(max_interior / max_boundary, 1) << std::endl
+          << "  both within " << fmt(tol) << "                : "
+          << Verification::verdict(max_stress_error < tol && max_interior / max_boundary < tol)
+          << std::endl;
+  }
+
+
+
+  void
   Simulator::run_static_check()
   {
     const VerificationParameters &vp  = parameters.verification;
@@ -60,45 +108,7 @@ namespace WheelRail
 
     if (parameters.problem.mode == "patch test")
       {
-        const Tensor<2, dim> G = vp.displacement_gradient;
-        solver->set_displacement([&](const Point<dim> &X) { return G * X; });
-        solver->compute_internal_force(force);
-        const Tensor<2, dim> Sx =
-          StVenantKirchhoff::second_piola_kirchhoff_stress(StVenantKirchhoff::green_lagrange_strain(
-                                                             unit_symmetric_tensor<dim>() + G),
-                                                           parameters.material.lambda(),
-                                                           parameters.material.mu());
-        double     max_stress_error = 0;
-        const auto stresses         = solver->cell_stresses();
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              const auto &s = stresses[cell->active_cell_index()];
-              max_stress_error =
-                std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
-            }
-        max_stress_error    = Utilities::MPI::max(max_stress_error, mpi_communicator);
-        double max_interior = 0, max_boundary = 0;
-        for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
-          (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
-            std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
-                     std::abs(force.local_element(i)));
-        max_interior     = Utilities::MPI::max(max_interior, mpi_communicator);
-        max_boundary     = Utilities::MPI::max(max_boundary, mpi_communicator);
-        const double tol = static_check_tolerance(parameters);
-        pcout << "Patch test: u = G X on every node" << std::endl
-              << "  exact 2nd Piola-Kirchhoff stress |S| : " << fmt(Sx.norm() * 1e-6) << " MPa"
-              << std::endl
-              << "  S_xx, S_yy, S_zz, S_xy, S_yz, S_xz   : " << fmt(Sx[0][0] * 1e-6) << " "
-              << fmt(Sx[1][1] * 1e-6) << " " << fmt(Sx[2][2] * 1e-6) << " " << fmt(Sx[0][1] * 1e-6)
-              << " " << fmt(Sx[1][2] * 1e-6) << " " << fmt(Sx[0][2] * 1e-6) << " MPa" << std::endl
-              << "  largest cell stress error / |S|      : " << fmt(max_stress_error, 1)
-              << std::endl
-              << "  largest interior nodal force / largest boundary nodal force : "
-              << fmt(max_interior / max_boundary, 1) << std::endl
-              << "  both within " << fmt(tol) << "                : "
-              << Verification::verdict(max_stress_error < tol && max_interior / max_boundary < tol)
-              << std::endl;
+        run_patch_test();
         return;
       }
 
@@ -241,7 +251,7 @@ namespace WheelRail
     if (wp.runup_damping > 0 && wp.runup_time > 0)
       {
         pcout << "  run-up damping alpha = " << fmt(wp.runup_damping) << " 1/s of "
-              << (wp.runup_damping_shape == "nodes" ?
+              << (wheelset_coupling->damping_shape() == RunupDampingShape::nodes ?
                     "the velocity relative to the wheelset's rigid motion" :
                     "the wheel's rigid motion relative to the axle's");
         if (wp.runup_time < parameters.solver.end_time)
