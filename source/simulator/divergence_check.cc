@@ -73,6 +73,26 @@ namespace WheelRail
   std::string
   DivergenceCheck::explain(const unsigned long n, const Energies &e) const
   {
+    const std::string  location = worst_node();
+    const double       dt       = access.solver.time_step();
+    std::ostringstream message;
+    message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
+            << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
+                  "the energy balance error " + fmt(balance.max_balance_error(), 3) +
+                    " exceeds Output/Divergence limit " +
+                    fmt(access.parameters.output.divergence_limit) :
+                  std::string("NaN or infinite energy"))
+            << "; " << location << ". Likely cause: ";
+    likely_cause(n, message);
+    message << ". The statistics and probes up to the last statistics row were written.";
+    return message.str();
+  }
+
+
+
+  std::string
+  DivergenceCheck::worst_node() const
+  {
     // the first non-finite (or, if all are finite, the fastest) DoF of
     // each rank; the rank with the worst one tells
     const VectorType &u = access.solver.displacement(), &v = access.solver.velocity();
@@ -110,26 +130,38 @@ namespace WheelRail
               << " m, v = " << fmt(v.local_element(worst), 4) << " m/s"
               << (access.solver.boundary_dof_mask()[worst] ? " (a surface node)" : "");
       }
-    const std::string location =
-      Utilities::MPI::broadcast(access.mpi_communicator, where.str(), teller);
+    return Utilities::MPI::broadcast(access.mpi_communicator, where.str(), teller);
+  }
 
+
+
+  double
+  DivergenceCheck::body_extent() const
+  {
     // the body's size, for the strain that gravity alone would cause
-    double extent = 0;
-    {
-      const auto &points = access.solver.support_points();
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          double lo = std::numeric_limits<double>::max(), hi = -lo;
-          for (const Point<dim> &p : points)
-            {
-              lo = std::min(lo, p[d]);
-              hi = std::max(hi, p[d]);
-            }
-          lo     = Utilities::MPI::min(lo, access.mpi_communicator);
-          hi     = Utilities::MPI::max(hi, access.mpi_communicator);
-          extent = std::max(extent, hi - lo);
-        }
-    }
+    double      extent = 0;
+    const auto &points = access.solver.support_points();
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        double lo = std::numeric_limits<double>::max(), hi = -lo;
+        for (const Point<dim> &p : points)
+          {
+            lo = std::min(lo, p[d]);
+            hi = std::max(hi, p[d]);
+          }
+        lo     = Utilities::MPI::min(lo, access.mpi_communicator);
+        hi     = Utilities::MPI::max(hi, access.mpi_communicator);
+        extent = std::max(extent, hi - lo);
+      }
+    return extent;
+  }
+
+
+
+  void
+  DivergenceCheck::likely_cause(const unsigned long n, std::ostream &message) const
+  {
+    const double extent = body_extent();
     const MaterialParameters &material = access.parameters.material;
     const double              c        = material.wave_speed();
     const double              gravity_strain =
@@ -158,14 +190,6 @@ namespace WheelRail
     const double       stable       = access.solver.stable_time_step();
     const double       critical     = stable / access.parameters.solver.courant_factor;
     const double       h_min        = critical * c; // the smallest element length
-    std::ostringstream message;
-    message << "The solution diverged at step " << n << ", t = " << fmt(n * dt) << " s: "
-            << (std::isfinite(e.kinetic) && std::isfinite(e.internal) ?
-                  "the energy balance error " + fmt(balance.max_balance_error(), 3) +
-                    " exceeds Output/Divergence limit " +
-                    fmt(access.parameters.output.divergence_limit) :
-                  std::string("NaN or infinite energy"))
-            << "; " << location << ". Likely cause: ";
     // the causes in the order in which one hides the next: a load (gravity,
     // the applied force, the prescribed velocity) or an initial state
     // beyond small strains, a contact the search missed, the
@@ -210,7 +234,5 @@ namespace WheelRail
               << " s of the mesh (Time integration/Time step, Courant factor)";
     else
       message << "an unconstrained body or an initial condition far from equilibrium";
-    message << ". The statistics and probes up to the last statistics row were written.";
-    return message.str();
   }
 } // namespace WheelRail

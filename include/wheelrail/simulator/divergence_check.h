@@ -10,6 +10,7 @@
 #include <wheelrail/postprocess/postprocessor.h>
 
 #include <functional>
+#include <ostream>
 #include <string>
 
 namespace WheelRail
@@ -47,6 +48,17 @@ namespace WheelRail
     /** Where and why the run diverged at step @p n (all ranks call it). */
     std::string
     explain(const unsigned long n, const Energies &e) const;
+    /** Where the first non-finite value, or the fastest node, is (the
+     *  rank that has it tells all ranks). */
+    std::string
+    worst_node() const;
+    /** The largest extent of the bodies along an axis (all ranks) [m]. */
+    double
+    body_extent() const;
+    /** The likely cause of a divergence at step @p n into @p message: the
+     *  causes in the order in which one hides the next. */
+    void
+    likely_cause(const unsigned long n, std::ostream &message) const;
 
     const SimulatorAccess      &access;
     const EnergyBalance        &balance;
