@@ -69,9 +69,23 @@ namespace WheelRail
                                const types::boundary_id master_id,
                                Pass                    &pass)
   {
+    std::vector<double> slaves, faces;
+    pack_boundary_faces(dof_handler, slave_id, master_id, slaves, faces);
+    add_slaves(Utilities::MPI::all_gather(mpi_communicator, slaves), pass);
+    add_master_faces(Utilities::MPI::all_gather(mpi_communicator, faces), pass);
+  }
+
+
+
+  void
+  PenaltyContact::pack_boundary_faces(const DoFHandler<dim>   &dof_handler,
+                                      const types::boundary_id slave_id,
+                                      const types::boundary_id master_id,
+                                      std::vector<double>     &slaves,
+                                      std::vector<double>     &faces) const
+  {
     // local contributions, packed as doubles for one all_gather each:
     // slaves (dof, X, partial area), faces (4 dofs, 4 X, k, sign)
-    std::vector<double> slaves, faces;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const unsigned int f : cell->face_indices())
@@ -104,11 +118,15 @@ namespace WheelRail
                   faces.push_back(n * (face->center() - cell->center()) > 0 ? 1. : -1.);
                 }
             }
+  }
 
+
+
+  void
+  PenaltyContact::add_slaves(const std::vector<std::vector<double>> &slave_parts, Pass &pass)
+  {
     // slaves: sum the partial areas of shared nodes, order by position
     std::map<types::global_dof_index, std::pair<Point<dim>, double>> slave_map;
-    const std::vector<std::vector<double>>                           slave_parts =
-      Utilities::MPI::all_gather(mpi_communicator, slaves);
     for (const auto &part : slave_parts)
       for (unsigned int i = 0; i < part.size(); i += 5)
         {
@@ -144,11 +162,17 @@ namespace WheelRail
             face[v] = slave_of_dof.at(static_cast<types::global_dof_index>(part[i + 5 * v]));
           pass.slave_faces.push_back(face);
         }
+  }
 
+
+
+  void
+  PenaltyContact::add_master_faces(const std::vector<std::vector<double>> &face_parts, Pass &pass)
+  {
     // faces, ordered by centroid
     std::vector<std::pair<Point<dim>, std::vector<double>>> sorted_faces;
     double thinnest = std::numeric_limits<double>::max(); // smallest V / A
-    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, faces))
+    for (const auto &part : face_parts)
       for (unsigned int i = 0; i < part.size(); i += 19)
         {
           Point<dim> c;
@@ -268,6 +292,25 @@ namespace WheelRail
                              LinearAlgebra::distributed::Vector<double>       &f)
   {
     Clock::time_point clock = Clock::now();
+    update_positions(u, advance, clock);
+    track_candidate_motion();
+    // the averaged nodal normals and the face bounds of this evaluation are
+    // computed where compute_slaves() first needs them
+    ++evaluation;
+    evaluate_passes(dt, advance, clock);
+    scatter_forces(f);
+    if (advance)
+      ++steps_since_search;
+    timing.forces += lap(clock);
+  }
+
+
+
+  void
+  PenaltyContact::update_positions(const LinearAlgebra::distributed::Vector<double> &u,
+                                   const bool                                        advance,
+                                   Clock::time_point                                &clock)
+  {
     // the ranks meet here first after their element loops, in the reduction
     // of the approach bound: what one waits for the other (imbalance, and
     // the noise of single steps) is timed on its own
@@ -285,6 +328,13 @@ namespace WheelRail
         gather_positions(u, active_gather);
         timing.positions += lap(clock);
       }
+  }
+
+
+
+  void
+  PenaltyContact::track_candidate_motion()
+  {
     // In one pass over the candidates (replicated positions: the same on
     // every rank): the largest motion of a candidate slave or a corner of
     // its faces since the last evaluation, for select_slaves(), and whether
@@ -306,11 +356,13 @@ namespace WheelRail
     else
       resume_valid = false;
     need_search = need_search || moved_far;
+  }
 
-    // the averaged nodal normals and the face bounds of this evaluation are
-    // computed where compute_slaves() first needs them
-    ++evaluation;
 
+
+  void
+  PenaltyContact::evaluate_passes(const double dt, const bool advance, Clock::time_point &clock)
+  {
     // each rank a block of the candidates (ordered by position: a rank's
     // slaves share faces and nodal normals), then all states everywhere
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
@@ -338,7 +390,13 @@ namespace WheelRail
         overlap_checked = true;
         check_initial_overlap();
       }
+  }
 
+
+
+  void
+  PenaltyContact::scatter_forces(LinearAlgebra::distributed::Vector<double> &f) const
+  {
     // forces on the owned DoFs, with the sign of internal forces; only the
     // slaves evaluated at this step can be in contact (accumulate())
     for (const Pass &pass : passes)
@@ -364,9 +422,6 @@ namespace WheelRail
           for (unsigned int v = 0; v < 4; ++v)
             add(node_dof[face.node[v]], -N[v]);
         }
-    if (advance)
-      ++steps_since_search;
-    timing.forces += lap(clock);
   }
 
 

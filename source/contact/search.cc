@@ -150,101 +150,14 @@ namespace WheelRail
     gather_positions(u, all_gather);
     node_x_search = node_x;
 
-    const double      margin = prm.search_margin;
     std::vector<bool> active(node_dof.size(), false);
     for (Pass &pass : passes)
       {
-        // rtree of the master faces' boxes grown by the margin
-        std::vector<std::pair<BoostBox, unsigned int>> boxes;
-        for (unsigned int f = 0; f < pass.faces.size(); ++f)
-          {
-            const auto [lo, hi] = face_box(pass.faces[f], node_x);
-            boxes.emplace_back(BoostBox(BoostPoint(lo[0] - margin, lo[1] - margin, lo[2] - margin),
-                                        BoostPoint(hi[0] + margin, hi[1] + margin, hi[2] + margin)),
-                               f);
-          }
-        const bgi::rtree<std::pair<BoostBox, unsigned int>, bgi::quadratic<16>> tree(boxes);
-
         std::vector<bool> was_candidate(pass.slaves.size(), false);
         for (const unsigned int s : pass.candidate_slaves)
           was_candidate[s] = true;
-        pass.candidate_slaves.clear();
-        pass.face_offsets.assign(1, 0);
-        pass.face_lists.clear();
-        std::vector<bool> face_used(pass.faces.size(), false);
-
-        // the queries of this rank's block of the slaves, packed as
-        // (slave, number of faces, faces in ascending order), then all
-        // ranks' blocks in slave order on every rank
-        const auto                                     own = own_candidates(pass.slaves.size());
-        std::vector<unsigned int>                      found;
-        std::vector<std::pair<BoostBox, unsigned int>> hits;
-        for (unsigned int s = own.first; s < own.second; ++s)
-          {
-            const Point<dim> &x = node_x[pass.slave_node[s]];
-            hits.clear();
-            tree.query(bgi::intersects(BoostPoint(x[0], x[1], x[2])), std::back_inserter(hits));
-            if (hits.empty())
-              continue;
-            found.push_back(s);
-            found.push_back(hits.size());
-            const std::size_t first = found.size();
-            for (const auto &h : hits)
-              found.push_back(h.second);
-            std::sort(found.begin() + first, found.end());
-          }
-        if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
-          {
-            std::vector<unsigned int> merged;
-            all_gather_concatenated(found, MPI_UNSIGNED, merged);
-            found.swap(merged);
-          }
-
-        std::size_t next = 0; // the next packed slave in found
-        for (unsigned int s = 0; s < pass.slaves.size(); ++s)
-          {
-            const Point<dim> &x = node_x[pass.slave_node[s]];
-            if (next >= found.size() || found[next] != s)
-              {
-                // out of reach: no contact, no friction memory, no gap
-                // (farther than the margin)
-                pass.slaves[s].gap              = std::numeric_limits<double>::infinity();
-                pass.slaves[s].in_contact       = false;
-                pass.slaves[s].normal_force     = 0;
-                pass.slaves[s].tangential_force = Tensor<1, dim>();
-                pass.slaves[s].face             = -1;
-                continue;
-              }
-            const unsigned int  n_faces = found[next + 1];
-            const unsigned int *list    = &found[next + 2];
-            next += 2 + n_faces;
-            pass.candidate_slaves.push_back(s);
-            active[pass.slave_node[s]] = true;
-            if (!was_candidate[s])
-              pass.slaves[s].x_previous = x;
-            for (const unsigned int f : ArrayView<const unsigned int>(list, n_faces))
-              {
-                pass.face_lists.push_back(f);
-                if (!face_used[f])
-                  {
-                    face_used[f] = true;
-                    for (unsigned int v = 0; v < 4; ++v)
-                      active[pass.faces[f].node[v]] = true;
-                  }
-              }
-            pass.face_offsets.push_back(pass.face_lists.size());
-          }
-        pass.candidate_faces.clear();
-        for (unsigned int f = 0; f < pass.faces.size(); ++f)
-          if (face_used[f])
-            pass.candidate_faces.push_back(f);
-        // friction memory on a face that left the candidates is lost
-        for (auto &s : pass.slaves)
-          if (s.face >= 0 && !face_used[s.face])
-            {
-              s.face             = -1;
-              s.tangential_force = Tensor<1, dim>();
-            }
+        const std::vector<unsigned int> found = query_candidates(pass);
+        assign_candidates(found, was_candidate, pass, active);
       }
     active_nodes.clear();
     for (unsigned int n = 0; n < active.size(); ++n)
@@ -257,5 +170,110 @@ namespace WheelRail
     steps_since_search = 0;
     ++searches;
     search_time += timer.wall_time();
+  }
+
+
+
+  std::vector<unsigned int>
+  PenaltyContact::query_candidates(const Pass &pass)
+  {
+    // rtree of the master faces' boxes grown by the margin
+    const double                                   margin = prm.search_margin;
+    std::vector<std::pair<BoostBox, unsigned int>> boxes;
+    for (unsigned int f = 0; f < pass.faces.size(); ++f)
+      {
+        const auto [lo, hi] = face_box(pass.faces[f], node_x);
+        boxes.emplace_back(BoostBox(BoostPoint(lo[0] - margin, lo[1] - margin, lo[2] - margin),
+                                    BoostPoint(hi[0] + margin, hi[1] + margin, hi[2] + margin)),
+                           f);
+      }
+    const bgi::rtree<std::pair<BoostBox, unsigned int>, bgi::quadratic<16>> tree(boxes);
+
+    // the queries of this rank's block of the slaves, packed as
+    // (slave, number of faces, faces in ascending order), then all
+    // ranks' blocks in slave order on every rank
+    const auto                                     own = own_candidates(pass.slaves.size());
+    std::vector<unsigned int>                      found;
+    std::vector<std::pair<BoostBox, unsigned int>> hits;
+    for (unsigned int s = own.first; s < own.second; ++s)
+      {
+        const Point<dim> &x = node_x[pass.slave_node[s]];
+        hits.clear();
+        tree.query(bgi::intersects(BoostPoint(x[0], x[1], x[2])), std::back_inserter(hits));
+        if (hits.empty())
+          continue;
+        found.push_back(s);
+        found.push_back(hits.size());
+        const std::size_t first = found.size();
+        for (const auto &h : hits)
+          found.push_back(h.second);
+        std::sort(found.begin() + first, found.end());
+      }
+    if (Utilities::MPI::n_mpi_processes(mpi_communicator) > 1)
+      {
+        std::vector<unsigned int> merged;
+        all_gather_concatenated(found, MPI_UNSIGNED, merged);
+        found.swap(merged);
+      }
+    return found;
+  }
+
+
+
+  void
+  PenaltyContact::assign_candidates(const std::vector<unsigned int> &found,
+                                    const std::vector<bool>         &was_candidate,
+                                    Pass                            &pass,
+                                    std::vector<bool>               &active)
+  {
+    pass.candidate_slaves.clear();
+    pass.face_offsets.assign(1, 0);
+    pass.face_lists.clear();
+    std::vector<bool> face_used(pass.faces.size(), false);
+    std::size_t       next = 0; // the next packed slave in found
+    for (unsigned int s = 0; s < pass.slaves.size(); ++s)
+      {
+        const Point<dim> &x = node_x[pass.slave_node[s]];
+        if (next >= found.size() || found[next] != s)
+          {
+            // out of reach: no contact, no friction memory, no gap
+            // (farther than the margin)
+            pass.slaves[s].gap              = std::numeric_limits<double>::infinity();
+            pass.slaves[s].in_contact       = false;
+            pass.slaves[s].normal_force     = 0;
+            pass.slaves[s].tangential_force = Tensor<1, dim>();
+            pass.slaves[s].face             = -1;
+            continue;
+          }
+        const unsigned int  n_faces = found[next + 1];
+        const unsigned int *list    = &found[next + 2];
+        next += 2 + n_faces;
+        pass.candidate_slaves.push_back(s);
+        active[pass.slave_node[s]] = true;
+        if (!was_candidate[s])
+          pass.slaves[s].x_previous = x;
+        for (const unsigned int f : ArrayView<const unsigned int>(list, n_faces))
+          {
+            pass.face_lists.push_back(f);
+            if (!face_used[f])
+              {
+                face_used[f] = true;
+                for (unsigned int v = 0; v < 4; ++v)
+                  active[pass.faces[f].node[v]] = true;
+              }
+          }
+        pass.face_offsets.push_back(pass.face_lists.size());
+      }
+    pass.candidate_faces.clear();
+    for (unsigned int f = 0; f < pass.faces.size(); ++f)
+      if (face_used[f])
+        pass.candidate_faces.push_back(f);
+    // friction memory on a face that left the candidates is lost
+    for (auto &s : pass.slaves)
+      if (s.face >= 0 && !face_used[s.face])
+        {
+          s.face             = -1;
+          s.tangential_force = Tensor<1, dim>();
+        }
   }
 } // namespace WheelRail

@@ -101,202 +101,233 @@ namespace WheelRail
   void
   PenaltyContact::compute_slaves(Pass &pass, const double dt, const bool advance)
   {
-    const double margin = prm.search_margin;
-    const auto   own    = own_candidates(pass.evaluated.size());
+    const auto own = own_candidates(pass.evaluated.size());
     for (unsigned int e = own.first; e < own.second; ++e)
+      compute_slave(pass, e, dt, advance);
+  }
+
+
+
+  void
+  PenaltyContact::compute_slave(Pass &pass, const unsigned int e, const double dt, const bool advance)
+  {
+    const unsigned int c     = pass.evaluated[e];
+    const unsigned int s     = pass.candidate_slaves[c];
+    ContactNodeState  &state = pass.slaves[s];
+    const Point<dim>  &xs    = node_x[pass.slave_node[s]];
+    state.x                  = xs;
+    const Point<dim> x_prev  = state.x_previous;
+    state.friction_loss      = 0;
+    state.damping_work       = 0;
+    if (advance)
+      state.x_previous = xs;
+
+    const ClosestPoint best = closest_point(pass, c, xs);
+    state.gap               = best.face >= 0 ? best.gap : 0.;
+    if (best.face < 0 || best.gap >= 0)
       {
-        const unsigned int c     = pass.evaluated[e];
-        const unsigned int s     = pass.candidate_slaves[c];
-        ContactNodeState  &state = pass.slaves[s];
-        const Point<dim>  &xs    = node_x[pass.slave_node[s]];
-        state.x                  = xs;
-        const Point<dim> x_prev  = state.x_previous;
-        state.friction_loss      = 0;
-        state.damping_work       = 0;
-        if (advance)
-          state.x_previous = xs;
+        separate(state, xs, state.gap, advance);
+        pass.separated_inside[e] = best.face >= 0 && best.out == 0 &&
+                                   best.ignored_slack > std::min(best.gap, kept_distance());
+        return;
+      }
 
-        // closest point over the candidate faces; a projection inside a
-        // face wins, otherwise the nearest face edge takes over
-        int            best_face = -1;
-        double         best_xi = 0, best_eta = 0, best_gap = 0, best_out = 1e300;
-        Tensor<1, dim> best_n;
-        // how far the faces left out for a gap below -margin are from
-        // counting (select_slaves())
-        double ignored_slack = std::numeric_limits<double>::infinity();
-        for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
+    // the penalty force, with the normal damping
+    const MasterFace &face = pass.faces[best.face];
+    const double      k    = slave_stiffness(state, face);
+    if (advance && state.face < 0)
+      new_contact_depth = std::max(new_contact_depth, -best.gap);
+    state.in_contact   = true;
+    state.normal       = best.normal;
+    state.normal_force = -k * best.gap;
+    if (advance && prm.damping_ratio > 0 && state.face >= 0 && std::isfinite(state.gap_previous))
+      add_normal_damping(state, k, best.gap, dt);
+
+    if (law && advance)
+      add_friction(pass, state, best, x_prev, k, dt);
+    else
+      {
+        // frictionless, or a static evaluation (no time step to slip in)
+        state.tangential_force = Tensor<1, dim>();
+        state.slip_velocity    = 0;
+        state.slip_rate        = Tensor<1, dim>();
+        state.cof              = law ? law->coefficient(0.) : 0.;
+        state.slipping         = false;
+      }
+    state.face         = best.face;
+    state.xi           = best.xi;
+    state.eta          = best.eta;
+    state.gap_previous = advance ? best.gap : std::numeric_limits<double>::quiet_NaN();
+  }
+
+
+
+  ClosestPoint
+  PenaltyContact::closest_point(Pass &pass, const unsigned int c, const Point<dim> &xs)
+  {
+    // closest point over the candidate faces; a projection inside a
+    // face wins, otherwise the nearest face edge takes over
+    const double margin = prm.search_margin;
+    ClosestPoint best;
+    for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
+      {
+        const unsigned int f     = pass.face_lists[k];
+        const FaceBound   &bound = face_bound(pass, f);
+        if (bound.usable())
           {
-            const unsigned int f     = pass.face_lists[k];
-            const FaceBound   &bound = face_bound(pass, f);
-            if (bound.usable())
-              {
-                // the projection cannot lie within 1.1 of this face (see
-                // compute_face_bound()): project() would give out > 0.1,
-                // skipped below; most candidates are neighbours of the
-                // face under the slave and end here
-                const Tensor<1, dim> d  = xs - bound.centre;
-                const double         dd = d.norm_square();
-                const double         dn = d * bound.normal;
-                const double         reach =
-                  1.01 * (bound.radius + (std::sqrt(dd) + bound.radius) * bound.sin_angle);
-                if (dd - dn * dn > reach * reach)
-                  continue;
-              }
-            const MasterFace &face = pass.faces[f];
-            BilinearFace      bf{{&node_x[face.node[0]],
-                                  &node_x[face.node[1]],
-                                  &node_x[face.node[2]],
-                                  &node_x[face.node[3]]}};
-            // a projection beyond 1.1 is not used: on a nearly flat face
-            // Newton may stop as soon as it is clearly there
-            double xi, eta;
-            pass.frames[f].project(xs,
-                                   xi,
-                                   eta,
-                                   bound.usable() ? 0.1 : std::numeric_limits<double>::infinity());
-            const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
-            if (out > 0.1)
+            // the projection cannot lie within 1.1 of this face (see
+            // compute_face_bound()): project() would give out > 0.1,
+            // skipped below; most candidates are neighbours of the
+            // face under the slave and end here
+            const Tensor<1, dim> d  = xs - bound.centre;
+            const double         dd = d.norm_square();
+            const double         dn = d * bound.normal;
+            const double         reach =
+              1.01 * (bound.radius + (std::sqrt(dd) + bound.radius) * bound.sin_angle);
+            if (dd - dn * dn > reach * reach)
               continue;
-            if (out > 0)
-              bf.project_to_boundary(xs, xi, eta);
-            Point<dim>     x;
-            Tensor<1, dim> dxi, deta;
-            double         N[4];
-            bf.evaluate(xi, eta, x, dxi, deta, N);
-            Tensor<1, dim> n;
-            for (unsigned int j = 0; j < 4; ++j)
-              n += N[j] * averaged_normal(face.node[j]);
-            n /= n.norm();
-            const double gap = n * (xs - x);
-            if (gap < -margin)
-              {
-                ignored_slack = std::min(ignored_slack, -margin - gap);
-                continue;
-              }
-            const double o      = std::max(out, 0.);
-            const bool   better = (o < best_out - 1e-12) ||
-                                (o <= best_out + 1e-12 && std::abs(gap) < std::abs(best_gap));
-            if (best_face < 0 || better)
-              {
-                best_face = f;
-                best_xi   = xi;
-                best_eta  = eta;
-                best_gap  = gap;
-                best_out  = o;
-                best_n    = n;
-              }
           }
-
-        state.gap = best_face >= 0 ? best_gap : 0.;
-        if (best_face < 0 || best_gap >= 0)
+        const MasterFace &face = pass.faces[f];
+        BilinearFace      bf{{&node_x[face.node[0]],
+                              &node_x[face.node[1]],
+                              &node_x[face.node[2]],
+                              &node_x[face.node[3]]}};
+        // a projection beyond 1.1 is not used: on a nearly flat face
+        // Newton may stop as soon as it is clearly there
+        double xi, eta;
+        pass.frames[f].project(xs,
+                               xi,
+                               eta,
+                               bound.usable() ? 0.1 : std::numeric_limits<double>::infinity());
+        const double out = std::max(std::abs(xi), std::abs(eta)) - 1.;
+        if (out > 0.1)
+          continue;
+        if (out > 0)
+          bf.project_to_boundary(xs, xi, eta);
+        Point<dim>     x;
+        Tensor<1, dim> dxi, deta;
+        double         N[4];
+        bf.evaluate(xi, eta, x, dxi, deta, N);
+        Tensor<1, dim> n;
+        for (unsigned int j = 0; j < 4; ++j)
+          n += N[j] * averaged_normal(face.node[j]);
+        n /= n.norm();
+        const double gap = n * (xs - x);
+        if (gap < -margin)
           {
-            separate(state, xs, state.gap, advance);
-            pass.separated_inside[e] = best_face >= 0 && best_out == 0 &&
-                                       ignored_slack > std::min(best_gap, kept_distance());
+            best.ignored_slack = std::min(best.ignored_slack, -margin - gap);
             continue;
           }
-
-        const MasterFace &face = pass.faces[best_face];
-        const double      k    = slave_stiffness(state, face);
-        if (advance && state.face < 0)
-          new_contact_depth = std::max(new_contact_depth, -best_gap);
-        state.in_contact   = true;
-        state.normal       = best_n;
-        state.normal_force = -k * best_gap;
-        if (advance && prm.damping_ratio > 0 && state.face >= 0 &&
-            std::isfinite(state.gap_previous))
+        const double o      = std::max(out, 0.);
+        const bool   better = (o < best.out - 1e-12) ||
+                            (o <= best.out + 1e-12 && std::abs(gap) < std::abs(best.gap));
+        if (best.face < 0 || better)
           {
-            // viscous normal force on the closing rate of the gap over the
-            // last explicit step (a static evaluation in between leaves the
-            // rate unknown: no damping this step); the total stays
-            // compressive. Central differences with a damper on the last
-            // step's rate keep a mode of frequency w stable while
-            // (w dt)^2 + 4 zeta w dt < 4. With w^2 = 4 k / m of the pair (two
-            // nodes, both springs in two passes), zeta is limited so that the
-            // left side stays below 2, half the limit: the other half is left
-            // for the surface cells' own stiffness, which the pair's estimate
-            // leaves out. A spring stiff for the step (the coarse meshes at
-            // the stable step, w dt up to 1.8) is left undamped; at h 0.66 mm
-            // (w dt 0.26) and in the contact block tests (1.01) a zeta of 0.2
-            // acts in full
-            const double w_dt = 2. * std::sqrt(k / state.mass) * dt;
-            const double zeta =
-              std::min(prm.damping_ratio, std::max(0., (2. - w_dt * w_dt) / (4. * w_dt)));
-            const double c    = 2. * zeta * std::sqrt(k * state.mass);
-            const double rate = (best_gap - state.gap_previous) / dt;
-            const double fd   = std::max(-c * rate, -state.normal_force);
-            state.normal_force += fd;
-            state.damping_work = -fd * rate * dt;
+            best.face   = f;
+            best.xi     = xi;
+            best.eta    = eta;
+            best.gap    = gap;
+            best.out    = o;
+            best.normal = n;
           }
-
-        if (law && advance)
-          {
-            const double kt = prm.tangential_factor * k;
-            // slip increment: the contact point now minus the old contact
-            // point on the current master geometry
-            Tensor<1, dim> de;
-            if (state.face < 0)
-              {
-                // a new contact: the friction memory starts afresh, and the
-                // slip of this step is the motion of the slave relative to
-                // the face, from its previous position projected onto the
-                // same face
-                state.friction = friction->new_contact();
-                BilinearFace bn{{&node_x[face.node[0]],
-                                 &node_x[face.node[1]],
-                                 &node_x[face.node[2]],
-                                 &node_x[face.node[3]]}};
-                double       xi_p, eta_p;
-                bn.project(x_prev, xi_p, eta_p);
-                Point<dim>     x_old, x_new;
-                Tensor<1, dim> dxi, deta;
-                double         N[4];
-                bn.evaluate(xi_p, eta_p, x_old, dxi, deta, N);
-                bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
-                de = x_new - x_old;
-              }
-            else
-              {
-                const MasterFace &old = pass.faces[state.face];
-                BilinearFace      bf{{&node_x[old.node[0]],
-                                      &node_x[old.node[1]],
-                                      &node_x[old.node[2]],
-                                      &node_x[old.node[3]]}};
-                Point<dim>        x_old, x_new;
-                Tensor<1, dim>    dxi, deta;
-                double            N[4];
-                bf.evaluate(state.xi, state.eta, x_old, dxi, deta, N);
-                BilinearFace bn{{&node_x[face.node[0]],
-                                 &node_x[face.node[1]],
-                                 &node_x[face.node[2]],
-                                 &node_x[face.node[3]]}};
-                bn.evaluate(best_xi, best_eta, x_new, dxi, deta, N);
-                de = x_new - x_old;
-              }
-            const FrictionModel::Result r =
-              friction->step(de, best_n, state.normal_force, kt, state.mass, dt, state.friction);
-            state.slip_rate        = r.slip_rate;
-            state.slip_velocity    = r.slip;
-            state.cof              = r.cof;
-            state.tangential_force = r.force;
-            state.slipping         = r.slipping;
-            state.friction_loss    = r.friction_loss;
-            state.damping_work += r.damping_work;
-          }
-        else
-          {
-            // frictionless, or a static evaluation (no time step to slip in)
-            state.tangential_force = Tensor<1, dim>();
-            state.slip_velocity    = 0;
-            state.slip_rate        = Tensor<1, dim>();
-            state.cof              = law ? law->coefficient(0.) : 0.;
-            state.slipping         = false;
-          }
-        state.face         = best_face;
-        state.xi           = best_xi;
-        state.eta          = best_eta;
-        state.gap_previous = advance ? best_gap : std::numeric_limits<double>::quiet_NaN();
       }
+    return best;
+  }
+
+
+
+  void
+  PenaltyContact::add_normal_damping(ContactNodeState &state,
+                                     const double      k,
+                                     const double      gap,
+                                     const double      dt) const
+  {
+    // viscous normal force on the closing rate of the gap over the
+    // last explicit step (a static evaluation in between leaves the
+    // rate unknown: no damping this step); the total stays
+    // compressive. Central differences with a damper on the last
+    // step's rate keep a mode of frequency w stable while
+    // (w dt)^2 + 4 zeta w dt < 4. With w^2 = 4 k / m of the pair (two
+    // nodes, both springs in two passes), zeta is limited so that the
+    // left side stays below 2, half the limit: the other half is left
+    // for the surface cells' own stiffness, which the pair's estimate
+    // leaves out. A spring stiff for the step (the coarse meshes at
+    // the stable step, w dt up to 1.8) is left undamped; at h 0.66 mm
+    // (w dt 0.26) and in the contact block tests (1.01) a zeta of 0.2
+    // acts in full
+    const double w_dt = 2. * std::sqrt(k / state.mass) * dt;
+    const double zeta = std::min(prm.damping_ratio, std::max(0., (2. - w_dt * w_dt) / (4. * w_dt)));
+    const double c    = 2. * zeta * std::sqrt(k * state.mass);
+    const double rate = (gap - state.gap_previous) / dt;
+    const double fd   = std::max(-c * rate, -state.normal_force);
+    state.normal_force += fd;
+    state.damping_work = -fd * rate * dt;
+  }
+
+
+
+  Tensor<1, dim>
+  PenaltyContact::slip_increment(const Pass             &pass,
+                                 const ContactNodeState &state,
+                                 const ClosestPoint     &best,
+                                 const Point<dim>       &x_prev) const
+  {
+    // the contact point now minus the old contact point on the current
+    // master geometry
+    const MasterFace &face = pass.faces[best.face];
+    BilinearFace      bn{{&node_x[face.node[0]],
+                          &node_x[face.node[1]],
+                          &node_x[face.node[2]],
+                          &node_x[face.node[3]]}};
+    Point<dim>        x_old, x_new;
+    Tensor<1, dim>    dxi, deta;
+    double            N[4];
+    if (state.face < 0)
+      {
+        // a new contact: the slip of this step is the motion of the slave
+        // relative to the face, from its previous position projected onto
+        // the same face
+        double xi_p, eta_p;
+        bn.project(x_prev, xi_p, eta_p);
+        bn.evaluate(xi_p, eta_p, x_old, dxi, deta, N);
+      }
+    else
+      {
+        const MasterFace &old = pass.faces[state.face];
+        BilinearFace      bf{{&node_x[old.node[0]],
+                              &node_x[old.node[1]],
+                              &node_x[old.node[2]],
+                              &node_x[old.node[3]]}};
+        bf.evaluate(state.xi, state.eta, x_old, dxi, deta, N);
+      }
+    bn.evaluate(best.xi, best.eta, x_new, dxi, deta, N);
+    return x_new - x_old;
+  }
+
+
+
+  void
+  PenaltyContact::add_friction(const Pass         &pass,
+                               ContactNodeState   &state,
+                               const ClosestPoint &best,
+                               const Point<dim>   &x_prev,
+                               const double        k,
+                               const double        dt)
+  {
+    const double kt = prm.tangential_factor * k;
+    // a new contact: the friction memory starts afresh
+    if (state.face < 0)
+      state.friction = friction->new_contact();
+    const Tensor<1, dim>        de = slip_increment(pass, state, best, x_prev);
+    const FrictionModel::Result r =
+      friction->step(de, best.normal, state.normal_force, kt, state.mass, dt, state.friction);
+    state.slip_rate        = r.slip_rate;
+    state.slip_velocity    = r.slip;
+    state.cof              = r.cof;
+    state.tangential_force = r.force;
+    state.slipping         = r.slipping;
+    state.friction_loss    = r.friction_loss;
+    state.damping_work += r.damping_work;
   }
 
 
@@ -333,6 +364,34 @@ namespace WheelRail
     // (separate(), with the position every rank has): only the states in
     // contact travel whole. First the (contact, gap) pairs of all blocks,
     // then the contact states, whose number per rank the pairs tell.
+    all_gather_gaps(pass);
+    all_gather_contact_states(pass);
+    const unsigned int n   = pass.evaluated.size();
+    const auto         own = own_candidates(n);
+    for (unsigned int c = 0, i = 0; c < n; ++c)
+      {
+        const bool in_contact = exchange_gaps[2 * c] == 1.;
+        if (c < own.first || c >= own.second)
+          {
+            const unsigned int s     = pass.candidate_slaves[pass.evaluated[c]];
+            pass.separated_inside[c] = exchange_gaps[2 * c] == 2.;
+            if (in_contact)
+              pass.slaves[s] = exchange_buffer[i];
+            else
+              separate(pass.slaves[s],
+                       node_x[pass.slave_node[s]],
+                       exchange_gaps[2 * c + 1],
+                       advance);
+          }
+        i += in_contact;
+      }
+  }
+
+
+
+  void
+  PenaltyContact::all_gather_gaps(Pass &pass)
+  {
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     const unsigned int n       = pass.evaluated.size();
     const auto         own     = own_candidates(n);
@@ -362,7 +421,18 @@ namespace WheelRail
                               MPI_DOUBLE,
                               mpi_communicator);
     AssertThrowMPI(ierr);
+  }
 
+
+
+  void
+  PenaltyContact::all_gather_contact_states(const Pass &pass)
+  {
+    // exchange_counts and exchange_displs hold the blocks of (contact,
+    // gap) pairs of all_gather_gaps()
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const auto         own     = own_candidates(pass.evaluated.size());
+    std::vector<int>  &counts = exchange_counts, &displs = exchange_displs;
     // the contact states, in candidate order
     const int    size  = sizeof(ContactNodeState);
     unsigned int total = 0;
@@ -386,32 +456,15 @@ namespace WheelRail
          ++c)
       if (exchange_gaps[2 * c] == 1.)
         exchange_buffer[i++] = pass.slaves[pass.candidate_slaves[pass.evaluated[c]]];
-    ierr = MPI_Allgatherv(MPI_IN_PLACE,
-                          0,
-                          MPI_DATATYPE_NULL,
-                          exchange_buffer.data(),
-                          counts.data(),
-                          displs.data(),
-                          MPI_BYTE,
-                          mpi_communicator);
+    const int ierr = MPI_Allgatherv(MPI_IN_PLACE,
+                                    0,
+                                    MPI_DATATYPE_NULL,
+                                    exchange_buffer.data(),
+                                    counts.data(),
+                                    displs.data(),
+                                    MPI_BYTE,
+                                    mpi_communicator);
     AssertThrowMPI(ierr);
-    for (unsigned int c = 0, i = 0; c < n; ++c)
-      {
-        const bool in_contact = exchange_gaps[2 * c] == 1.;
-        if (c < own.first || c >= own.second)
-          {
-            const unsigned int s     = pass.candidate_slaves[pass.evaluated[c]];
-            pass.separated_inside[c] = exchange_gaps[2 * c] == 2.;
-            if (in_contact)
-              pass.slaves[s] = exchange_buffer[i];
-            else
-              separate(pass.slaves[s],
-                       node_x[pass.slave_node[s]],
-                       exchange_gaps[2 * c + 1],
-                       advance);
-          }
-        i += in_contact;
-      }
   }
 
 

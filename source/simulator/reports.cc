@@ -5,6 +5,7 @@
 #include <wheelrail/simulator/simulator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -109,36 +110,69 @@ namespace WheelRail
 
 
 
+  std::vector<std::vector<double>>
+  Simulator::gather_part_times(const double output_seconds) const
+  {
+    const StepTimes                       &t = solver->step_times();
+    const ContactTimes                     no_contact;
+    const ContactTimes                    &c = contact ? contact->times() : no_contact;
+    return Utilities::MPI::gather(mpi_communicator,
+                                  std::vector<double>{t.elements,
+                                                      t.contact,
+                                                      t.update,
+                                                      t.communication,
+                                                      t.energies,
+                                                      output_seconds,
+                                                      c.search,
+                                                      c.wait,
+                                                      c.positions,
+                                                      c.slaves,
+                                                      c.exchange,
+                                                      c.forces},
+                                  0);
+  }
+
+
+
+  std::array<double, 3>
+  Simulator::step_time_spread(std::vector<double> &step_seconds) const
+  {
+    // fastest, median and 95th percentile, each the largest over the
+    // ranks, in ms; printed where any step was timed
+    std::array<double, 3> spread = {{0, 0, 0}};
+    if (!step_seconds.empty())
+      {
+        const auto at = [&](const double q) {
+          const std::size_t k =
+            std::min<std::size_t>(step_seconds.size() - 1, q * step_seconds.size());
+          std::nth_element(step_seconds.begin(), step_seconds.begin() + k, step_seconds.end());
+          return 1e3 * step_seconds[k];
+        };
+        const double local[3] = {at(0.), at(0.5), at(0.95)};
+        Utilities::MPI::max(ArrayView<const double>(local, 3),
+                            mpi_communicator,
+                            ArrayView<double>(spread.data(), 3));
+        pcout << "  step wall time (ms): fastest " << fmt(spread[0], 4) << ", median "
+              << fmt(spread[1], 4) << ", 95th percentile " << fmt(spread[2], 4) << std::endl;
+      }
+    return spread;
+  }
+
+
+
   void
   Simulator::report_timing(const double         wall_seconds,
                            const double         output_seconds,
                            const unsigned long  n_steps,
                            std::vector<double> &step_seconds) const
   {
-    const StepTimes   &t       = solver->step_times();
     const double       cells   = triangulation.n_global_active_cells();
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     // Each rank's parts: the run goes at the pace of the slowest rank in
     // each part, and a faster rank's lead shows up as waiting in the next
     // part that meets the other ranks (the contact's first reduction, or the
     // communication). timing.csv keeps each part's largest time over the ranks.
-    const ContactTimes                     no_contact;
-    const ContactTimes                    &c = contact ? contact->times() : no_contact;
-    const std::vector<std::vector<double>> by_rank =
-      Utilities::MPI::gather(mpi_communicator,
-                             std::vector<double>{t.elements,
-                                                 t.contact,
-                                                 t.update,
-                                                 t.communication,
-                                                 t.energies,
-                                                 output_seconds,
-                                                 c.search,
-                                                 c.wait,
-                                                 c.positions,
-                                                 c.slaves,
-                                                 c.exchange,
-                                                 c.forces},
-                             0);
+    const std::vector<std::vector<double>> by_rank = gather_part_times(output_seconds);
     const double                         wall = Utilities::MPI::max(wall_seconds, mpi_communicator);
     const Utilities::System::MemoryStats memory = [] {
       Utilities::System::MemoryStats m;
@@ -167,22 +201,7 @@ namespace WheelRail
     // host the same step's time varies by tens of per cent, and with
     // several ranks each step waits for the slowest): fastest, median and
     // 95th percentile, each the largest over the ranks, in ms
-    double spread[3] = {0, 0, 0};
-    if (!step_seconds.empty())
-      {
-        const auto at = [&](const double q) {
-          const std::size_t k =
-            std::min<std::size_t>(step_seconds.size() - 1, q * step_seconds.size());
-          std::nth_element(step_seconds.begin(), step_seconds.begin() + k, step_seconds.end());
-          return 1e3 * step_seconds[k];
-        };
-        const double local[3] = {at(0.), at(0.5), at(0.95)};
-        Utilities::MPI::max(ArrayView<const double>(local, 3),
-                            mpi_communicator,
-                            ArrayView<double>(spread, 3));
-        pcout << "  step wall time (ms): fastest " << fmt(spread[0], 4) << ", median "
-              << fmt(spread[1], 4) << ", 95th percentile " << fmt(spread[2], 4) << std::endl;
-      }
+    const std::array<double, 3> spread = step_time_spread(step_seconds);
     pcout << "  peak memory per rank " << fmt(peak_mb, 5) << " MB" << std::endl
           << "  the paper's full run (" << fmt(full_steps, 6)
           << " steps of 2.6e-8 s) at this rate on " << fmt(cells, 8)

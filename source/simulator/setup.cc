@@ -167,7 +167,11 @@ namespace WheelRail
         wheelset = std::make_unique<Wheelset>(parameters.wheelset,
                                               parameters.solver,
                                               geometry.wheel_centre());
-        solver->attach_wheelset(wheelset.get());
+        wheelset_coupling = std::make_unique<WheelsetCoupling>(*wheelset,
+                                                               parameters.wheelset,
+                                                               geometry.wheel_centre(),
+                                                               mpi_communicator);
+        solver->attach_rigid_body(wheelset_coupling.get());
       }
     access = std::make_unique<SimulatorAccess>(SimulatorAccess{parameters,
                                                                mpi_communicator,
@@ -178,18 +182,7 @@ namespace WheelRail
                                                                contact.get(),
                                                                wheelset.get()});
 
-    if (parameters.solver.time_step > 0)
-      {
-        AssertThrow(parameters.solver.time_step <= solver->stable_time_step() * (1 + 1e-12),
-                    ExcMessage("Time integration/Time step = " + fmt(parameters.solver.time_step) +
-                               " s exceeds the stable step " + fmt(solver->stable_time_step()) +
-                               " s (Courant factor x min L_e/c with the damping reduction): "
-                               "the explicit run would blow up. Reduce the time step, or "
-                               "coarsen Geometry/Mesh/Minimum cell size."));
-        solver->set_time_step(parameters.solver.time_step);
-      }
-    else
-      solver->set_time_step(solver->stable_time_step());
+    choose_time_step();
     if (parameters.problem.mode == "explicit dynamics")
       check_run_length();
 
@@ -316,6 +309,25 @@ namespace WheelRail
 
 
   void
+  Simulator::choose_time_step()
+  {
+    if (parameters.solver.time_step > 0)
+      {
+        AssertThrow(parameters.solver.time_step <= solver->stable_time_step() * (1 + 1e-12),
+                    ExcMessage("Time integration/Time step = " + fmt(parameters.solver.time_step) +
+                               " s exceeds the stable step " + fmt(solver->stable_time_step()) +
+                               " s (Courant factor x min L_e/c with the damping reduction): "
+                               "the explicit run would blow up. Reduce the time step, or "
+                               "coarsen Geometry/Mesh/Minimum cell size."));
+        solver->set_time_step(parameters.solver.time_step);
+      }
+    else
+      solver->set_time_step(solver->stable_time_step());
+  }
+
+
+
+  void
   Simulator::print_setup_summary()
   {
     const MeshQuality &q = solver->mesh_quality();
@@ -342,38 +354,44 @@ namespace WheelRail
           << "  hourglass coefficient QM     : " << fmt(parameters.solver.hourglass_coefficient)
           << std::endl
           << "  damping                      : " << parameters.solver.damping_model;
-    if (parameters.solver.damping_model == "stiffness")
+    if (solver->damping_model() == DampingModel::stiffness)
       pcout << " (COEF " << fmt(parameters.solver.stiffness_damping_coefficient) << ")";
-    else if (parameters.solver.damping_model == "Rayleigh")
+    else if (solver->damping_model() == DampingModel::rayleigh)
       pcout << " (beta " << fmt(parameters.solver.rayleigh_beta) << " s)";
     pcout << std::endl;
     if (parameters.solver.single_precision_geometry)
       pcout << "  element geometry             : single precision (force loop)" << std::endl;
     if (contact)
-      {
-        const ContactParameters &cp = parameters.contact;
-        pcout << "Contact" << std::endl
-              << "  slave boundary " << cp.slave_boundary << " (" << contact->slave_states().size()
-              << " nodes), master boundary " << cp.master_boundary
-              << (cp.two_pass ? ", two-pass" : ", one-pass") << std::endl
-              << "  penalty scale factor SF    : " << fmt(cp.penalty_scale) << std::endl;
-        if (cp.penalty_stiffness == "area")
-          pcout << "  penalty stiffness          : k = SF K min(A, A_s) / h_ref, h_ref = "
-                << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
-        pcout << "  friction law               : " << cp.friction_law;
-        if (const auto law = contact->friction_law())
-          pcout << " (" << law->describe([](const double x) { return fmt(x); }) << ")";
-        pcout << std::endl;
-        if (contact->friction_law() && (cp.slip_rate != "total" || cp.relaxation_length > 0 ||
-                                        cp.relaxation_time > 0 || cp.tangential_damping > 0))
-          pcout << "  friction regularisation    : slip rate " << cp.slip_rate
-                << ", relaxation L = " << fmt(cp.relaxation_length * 1e6)
-                << " um, tau = " << fmt(cp.relaxation_time * 1e6) << " us, tangential damping "
-                << fmt(cp.tangential_damping) << std::endl;
-      }
+      print_contact_summary();
     if (parameters.problem.mode == "explicit dynamics")
       pcout << "  steps                        : "
             << static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9))
             << " to t = " << fmt(parameters.solver.end_time * 1e3) << " ms" << std::endl;
+  }
+
+
+
+  void
+  Simulator::print_contact_summary()
+  {
+    const ContactParameters &cp = parameters.contact;
+    pcout << "Contact" << std::endl
+          << "  slave boundary " << cp.slave_boundary << " (" << contact->slave_states().size()
+          << " nodes), master boundary " << cp.master_boundary
+          << (cp.two_pass ? ", two-pass" : ", one-pass") << std::endl
+          << "  penalty scale factor SF    : " << fmt(cp.penalty_scale) << std::endl;
+    if (cp.penalty_stiffness == "area")
+      pcout << "  penalty stiffness          : k = SF K min(A, A_s) / h_ref, h_ref = "
+            << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
+    pcout << "  friction law               : " << cp.friction_law;
+    if (const auto law = contact->friction_law())
+      pcout << " (" << law->describe([](const double x) { return fmt(x); }) << ")";
+    pcout << std::endl;
+    if (contact->friction_law() && (cp.slip_rate != "total" || cp.relaxation_length > 0 ||
+                                    cp.relaxation_time > 0 || cp.tangential_damping > 0))
+      pcout << "  friction regularisation    : slip rate " << cp.slip_rate
+            << ", relaxation L = " << fmt(cp.relaxation_length * 1e6)
+            << " um, tau = " << fmt(cp.relaxation_time * 1e6) << " us, tangential damping "
+            << fmt(cp.tangential_damping) << std::endl;
   }
 } // namespace WheelRail

@@ -76,6 +76,45 @@ namespace WheelRail
 
 
   void
+  Simulator::run_patch_test()
+  {
+    const VerificationParameters &vp = parameters.verification;
+    VectorType                    force;
+    const Tensor<2, dim> G = vp.displacement_gradient;
+    solver->set_displacement([&](const Point<dim> &X) { return G * X; });
+    solver->compute_internal_force(force);
+    const Tensor<2, dim> Sx =
+      StVenantKirchhoff::second_piola_kirchhoff_stress(StVenantKirchhoff::green_lagrange_strain(
+                                                         unit_symmetric_tensor<dim>() + G),
+                                                       parameters.material.lambda(),
+                                                       parameters.material.mu());
+    double     max_stress_error = 0;
+    const auto stresses         = solver->cell_stresses();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto &s = stresses[cell->active_cell_index()];
+          max_stress_error =
+            std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
+        }
+    max_stress_error    = Utilities::MPI::max(max_stress_error, mpi_communicator);
+    double max_interior = 0, max_boundary = 0;
+    for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
+      (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
+        std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
+                 std::abs(force.local_element(i)));
+    max_interior = Utilities::MPI::max(max_interior, mpi_communicator);
+    max_boundary = Utilities::MPI::max(max_boundary, mpi_communicator);
+    report_patch_test(pcout,
+                      Sx,
+                      max_stress_error,
+                      max_interior / max_boundary,
+                      static_check_tolerance(parameters));
+  }
+
+
+
+  void
   Simulator::run_static_check()
   {
     const VerificationParameters &vp = parameters.verification;
@@ -84,36 +123,7 @@ namespace WheelRail
 
     if (parameters.problem.mode == "patch test")
       {
-        const Tensor<2, dim> G = vp.displacement_gradient;
-        solver->set_displacement([&](const Point<dim> &X) { return G * X; });
-        solver->compute_internal_force(force);
-        const Tensor<2, dim> Sx =
-          StVenantKirchhoff::second_piola_kirchhoff_stress(StVenantKirchhoff::green_lagrange_strain(
-                                                             unit_symmetric_tensor<dim>() + G),
-                                                           parameters.material.lambda(),
-                                                           parameters.material.mu());
-        double     max_stress_error = 0;
-        const auto stresses         = solver->cell_stresses();
-        for (const auto &cell : triangulation.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              const auto &s = stresses[cell->active_cell_index()];
-              max_stress_error =
-                std::max(max_stress_error, (s.second_piola_kirchhoff - Sx).norm() / Sx.norm());
-            }
-        max_stress_error    = Utilities::MPI::max(max_stress_error, mpi_communicator);
-        double max_interior = 0, max_boundary = 0;
-        for (unsigned int i = 0; i < force.locally_owned_size(); ++i)
-          (solver->boundary_dof_mask()[i] ? max_boundary : max_interior) =
-            std::max(solver->boundary_dof_mask()[i] ? max_boundary : max_interior,
-                     std::abs(force.local_element(i)));
-        max_interior = Utilities::MPI::max(max_interior, mpi_communicator);
-        max_boundary = Utilities::MPI::max(max_boundary, mpi_communicator);
-        report_patch_test(pcout,
-                          Sx,
-                          max_stress_error,
-                          max_interior / max_boundary,
-                          static_check_tolerance(parameters));
+        run_patch_test();
         return;
       }
 
@@ -257,7 +267,7 @@ namespace WheelRail
     if (wp.runup_damping > 0 && wp.runup_time > 0)
       {
         pcout << "  run-up damping alpha = " << fmt(wp.runup_damping) << " 1/s of "
-              << (wp.runup_damping_shape == "nodes" ?
+              << (wheelset_coupling->damping_shape() == RunupDampingShape::nodes ?
                     "the velocity relative to the wheelset's rigid motion" :
                     "the wheel's rigid motion relative to the axle's");
         if (wp.runup_time < parameters.solver.end_time)

@@ -16,6 +16,7 @@
 #include <wheelrail/solver/family_batch.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <limits>
 
@@ -97,6 +98,20 @@ namespace WheelRail
           }
       return true;
     }
+
+    /** Which DoF of the FESystem is component c of vertex a: [c][a]. */
+    using VertexDofs = std::array<std::array<unsigned int, 8>, dim>;
+    VertexDofs
+    vertex_dofs(const FiniteElement<dim> &fe)
+    {
+      VertexDofs dof_of;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto ci               = fe.system_to_component_index(i);
+          dof_of[ci.first][ci.second] = i;
+        }
+      return dof_of;
+    }
   } // namespace
 
 
@@ -104,13 +119,7 @@ namespace WheelRail
   void
   ElasticOperator::setup_node_data()
   {
-    // which DoF of the FESystem is component c of vertex a
-    unsigned int dof_of[dim][8];
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto ci               = fe.system_to_component_index(i);
-        dof_of[ci.first][ci.second] = i;
-      }
+    const VertexDofs dof_of = vertex_dofs(fe);
 
     const unsigned int n_local =
       vector_partitioner->locally_owned_size() + vector_partitioner->n_ghost_indices();
@@ -234,13 +243,7 @@ namespace WheelRail
     const double              c_wave = mat.wave_speed();
     const double              qm     = prm.solver.hourglass_coefficient;
 
-    // which DoF of the FESystem is component c of vertex a
-    unsigned int dof_of[dim][8];
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      {
-        const auto ci               = fe.system_to_component_index(i);
-        dof_of[ci.first][ci.second] = i;
-      }
+    const VertexDofs dof_of = vertex_dofs(fe);
 
     n_cells   = triangulation.n_locally_owned_active_cells();
     n_batches = (n_cells + W - 1) / W;
@@ -272,29 +275,8 @@ namespace WheelRail
         fe_values.reinit(typename Triangulation<dim>::active_cell_iterator(cell));
         cell->get_dof_indices(dofs);
 
-        double B[8][3] = {}, V0 = 0;
-        for (unsigned int q = 0; q < quadrature.size(); ++q)
-          {
-            V0 += fe_values.JxW(q);
-            for (unsigned int a = 0; a < 8; ++a)
-              for (unsigned int j = 0; j < 3; ++j)
-                B[a][j] += fe_values.shape_grad(a, q)[j] * fe_values.JxW(q);
-          }
-        double BB = 0;
-        for (unsigned int a = 0; a < 8; ++a)
-          for (unsigned int j = 0; j < 3; ++j)
-            {
-              data[(Field::b + a * 3 + j) * W + lane] = B[a][j] / V0;
-              BB += B[a][j] * B[a][j];
-            }
-        for (unsigned int al = 0; al < 4; ++al)
-          for (unsigned int j = 0; j < 3; ++j)
-            {
-              double s = 0;
-              for (unsigned int a = 0; a < 8; ++a)
-                s += hg[al][a] * cell->vertex(a)[j];
-              data[(Field::c + al * 3 + j) * W + lane] = s;
-            }
+        double V0, BB;
+        cell_geometry(fe_values, cell, lane, data, V0, BB);
 
         const double Le = measure_cell(cell, V0, local);
 
@@ -326,6 +308,53 @@ namespace WheelRail
         batch_material[std::size_t(batch) * W + lane]   = cell->material_id();
       }
 
+    reduce_mesh_quality(local, min_dt);
+    copy_single_precision();
+  }
+
+
+
+  void
+  ElasticOperator::cell_geometry(const FEValues<dim>                               &fe_values,
+                                 const DoFHandler<dim>::active_cell_iterator       &cell,
+                                 const unsigned int                                 lane,
+                                 double                                            *data,
+                                 double                                            &V0,
+                                 double                                            &BB) const
+  {
+    // the mean shape function gradients b_a = B_a / V0 and the hourglass
+    // base vectors c_al of the one-point element, and sum |B_a|^2
+    double B[8][3] = {};
+    V0             = 0;
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        V0 += fe_values.JxW(q);
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int j = 0; j < 3; ++j)
+            B[a][j] += fe_values.shape_grad(a, q)[j] * fe_values.JxW(q);
+      }
+    BB = 0;
+    for (unsigned int a = 0; a < 8; ++a)
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          data[(Field::b + a * 3 + j) * W + lane] = B[a][j] / V0;
+          BB += B[a][j] * B[a][j];
+        }
+    for (unsigned int al = 0; al < 4; ++al)
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          double s = 0;
+          for (unsigned int a = 0; a < 8; ++a)
+            s += hg[al][a] * cell->vertex(a)[j];
+          data[(Field::c + al * 3 + j) * W + lane] = s;
+        }
+  }
+
+
+
+  void
+  ElasticOperator::reduce_mesh_quality(const MeshQuality &local, const double min_dt)
+  {
     quality.min_edge            = Utilities::MPI::min(local.min_edge, mpi_communicator);
     quality.min_longest_edge    = Utilities::MPI::min(local.min_longest_edge, mpi_communicator);
     quality.min_length          = Utilities::MPI::min(local.min_length, mpi_communicator);
@@ -336,8 +365,13 @@ namespace WheelRail
                            "scaled Jacobian <= 0): check Geometry/Bar/Distortion "
                            "and the Geometry parameters."));
     stable_dt = prm.solver.courant_factor * Utilities::MPI::min(min_dt, mpi_communicator);
+  }
 
-    // the force loop's copy with single-precision geometric factors
+
+
+  void
+  ElasticOperator::copy_single_precision()
+  {    // the force loop's copy with single-precision geometric factors
     batch_single.clear();
     if (prm.solver.single_precision_geometry)
       {

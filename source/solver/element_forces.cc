@@ -59,6 +59,152 @@ namespace WheelRail
 
 
 
+  /** The nodal values of the batches, gathered one batch ahead of the
+   *  kernel (ElasticOperator::element_loop()): two slots, each the batch's
+   *  vertex values or, for a family, its grid values per component. */
+  struct ElasticOperator::GatherSlots
+  {
+    // v is gathered, and read, only with damping
+    alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
+    // a family's grid values per component, padded to 4 aligned vectors
+    // (expand_family() reads them whole; the gather repeats node 26)
+    alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
+  };
+
+
+
+  // not inlined: called at two places (the loop's first batch and the one
+  // ahead), as the compiler left the lambda it was before
+  template <bool with_damping>
+  __attribute__((noinline)) void
+  ElasticOperator::gather_batch(const unsigned int batch,
+                                const unsigned int slot,
+                                const double      *U,
+                                const double      *V,
+                                GatherSlots       &slots) const
+  {
+    const unsigned int family = batch_family[batch];
+    if (family != numbers::invalid_unsigned_int)
+      {
+        // the 27 grid nodes once
+        const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
+        if (family_wide_loads[family])
+          {
+            gather_family_grid(U, grid, slots.ug[slot]);
+            if constexpr (with_damping)
+              gather_family_grid(V, grid, slots.vg[slot]);
+          }
+        else
+          {
+            gather_family_grid_by_node(U, grid, slots.ug[slot]);
+            if constexpr (with_damping)
+              gather_family_grid_by_node(V, grid, slots.vg[slot]);
+          }
+      }
+    else
+      {
+        const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
+        for (unsigned int a = 0; a < 8; ++a)
+          for (unsigned int l = 0; l < W; ++l)
+            {
+              const unsigned int idx = nodes[a * W + l];
+              for (unsigned int d = 0; d < 3; ++d)
+                slots.u_gathered[slot][(a * 3 + d) * W + l] = U[idx + d];
+              if constexpr (with_damping)
+                for (unsigned int d = 0; d < 3; ++d)
+                  slots.v_gathered[slot][(a * 3 + d) * W + l] = V[idx + d];
+            }
+      }
+  }
+
+
+
+  template <typename Data, bool with_damping, bool with_energies>
+  WHEELRAIL_ALWAYS_INLINE double
+  ElasticOperator::batch_kernel(const Data        &data,
+                                const bool         in_family,
+                                const unsigned int slot,
+                                GatherSlots       &slots,
+                                double            *fb,
+                                BatchEnergies     &batch_energies,
+                                const double      *kappa_ref) const
+  {
+    typedef typename Data::vector V;
+    double                        batch_power = 0;
+    if constexpr (lanes_of<V> == W)
+      {
+        // one kernel, inlined here, for both kinds of batch (a kernel
+        // called as a function, or inlined at two places, took 8-10 %
+        // longer): a family's vertex vectors over the children by
+        // permutations of the aligned grid vectors
+        alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
+        const double      *u_batch = slots.u_gathered[slot], *v_batch = slots.v_gathered[slot];
+        if (in_family)
+          {
+            expand_family(slots.ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
+            if constexpr (with_damping)
+              expand_family(slots.vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
+            u_batch = ub;
+            v_batch = vb;
+          }
+        batch_power = batch_forces<with_damping, with_energies>(data,
+                                                                lame_lambda,
+                                                                lame_mu,
+                                                                BatchField<V>{u_batch},
+                                                                BatchField<V>{v_batch},
+                                                                fb,
+                                                                0.,
+                                                                &batch_energies,
+                                                                kappa_ref);
+      }
+    else
+      {
+        // the kernel once per part of the batch that its vector holds
+        const auto run_parts = [&](const auto &field_of) {
+#pragma GCC unroll 4
+          for (unsigned int lane = 0; lane < W; lane += lanes_of<V>)
+            batch_power = batch_forces<with_damping, with_energies>(Data{data.data, lane},
+                                                                    lame_lambda,
+                                                                    lame_mu,
+                                                                    field_of(0, lane),
+                                                                    field_of(1, lane),
+                                                                    fb + lane,
+                                                                    batch_power,
+                                                                    &batch_energies,
+                                                                    kappa_ref + lane);
+        };
+        if (!in_family)
+          run_parts([&](const unsigned int field, const unsigned int lane) {
+            return BatchField<V>{(field == 0 ? slots.u_gathered[slot] : slots.v_gathered[slot]) +
+                                 lane};
+          });
+        else
+          // narrower vectors read the grid values in place
+          run_parts([&](const unsigned int field, const unsigned int lane) {
+            return FamilyGridField<V>{field == 0 ? slots.ug[slot] : slots.vg[slot], lane};
+          });
+      }
+    return batch_power;
+  }
+
+
+
+  WHEELRAIL_ALWAYS_INLINE void
+  ElasticOperator::scatter_batch(const unsigned int batch, const double *fb, double *F) const
+  {
+    const unsigned int *nodes   = &batch_nodes[std::size_t(batch) * 8 * W];
+    const unsigned int  n_valid = std::min(W, n_cells - batch * W);
+    for (unsigned int a = 0; a < 8; ++a)
+      for (unsigned int l = 0; l < n_valid; ++l)
+        {
+          const unsigned int idx = nodes[a * W + l];
+          for (unsigned int d = 0; d < 3; ++d)
+            F[idx + d] += fb[(a * 3 + d) * W + l];
+        }
+  }
+
+
+
   template <typename Data, bool with_damping, bool with_energies>
   double
   ElasticOperator::element_loop(const double      *batch_blocks,
@@ -75,54 +221,15 @@ namespace WheelRail
     // have left the store buffer (a load that spans several recent stores
     // cannot be forwarded and waits for them).
     alignas(64) double fb[8 * 3 * W];
-    // v is gathered, and read, only with damping
-    alignas(64) double u_gathered[2][8 * 3 * W], v_gathered[2][8 * 3 * W];
-    // a family's grid values per component, padded to 4 aligned vectors
-    // (expand_family() reads them whole; the gather repeats node 26)
-    alignas(64) double ug[2][3][32] = {}, vg[2][3][32] = {};
-    const auto         gather = [&](const unsigned int batch, const unsigned int slot) {
-      const unsigned int family = batch_family[batch];
-      if (family != numbers::invalid_unsigned_int)
-        {
-          // the 27 grid nodes once
-          const unsigned int *grid = &family_nodes[std::size_t(family) * 27];
-          if (family_wide_loads[family])
-            {
-              gather_family_grid(U, grid, ug[slot]);
-              if constexpr (with_damping)
-                gather_family_grid(V, grid, vg[slot]);
-            }
-          else
-            {
-              gather_family_grid_by_node(U, grid, ug[slot]);
-              if constexpr (with_damping)
-                gather_family_grid_by_node(V, grid, vg[slot]);
-            }
-        }
-      else
-        {
-          const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
-          for (unsigned int a = 0; a < 8; ++a)
-            for (unsigned int l = 0; l < W; ++l)
-              {
-                const unsigned int idx = nodes[a * W + l];
-                for (unsigned int d = 0; d < 3; ++d)
-                  u_gathered[slot][(a * 3 + d) * W + l] = U[idx + d];
-                if constexpr (with_damping)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    v_gathered[slot][(a * 3 + d) * W + l] = V[idx + d];
-              }
-        }
-    };
-    double        power = 0;
-    BatchEnergies batch_energies;
+    GatherSlots        slots;
+    double             power = 0;
+    BatchEnergies      batch_energies;
     if (n_batches > 0)
-      gather(0, 0);
+      gather_batch<with_damping>(0, 0, U, V, slots);
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
-        const unsigned int *nodes = &batch_nodes[std::size_t(batch) * 8 * W];
-        const Data          data{batch_blocks + std::size_t(batch) * block_size};
-        const unsigned int  slot = batch & 1;
+        const Data         data{batch_blocks + std::size_t(batch) * block_size};
+        const unsigned int slot = batch & 1;
         if (batch + prefetch_distance < n_batches)
           prefetch_block(batch_blocks + std::size_t(batch + prefetch_distance) * block_size,
                          block_size);
@@ -130,80 +237,17 @@ namespace WheelRail
         if (batch + node_prefetch_distance < n_batches)
           prefetch_nodes(batch + node_prefetch_distance, U, V, F, with_damping);
         if (batch + 1 < n_batches)
-          gather(batch + 1, slot ^ 1);
-        const bool                    in_family = family != numbers::invalid_unsigned_int;
-        typedef typename Data::vector V;
-        const double                 *kappa_ref   = &batch_kappa_ref[std::size_t(batch) * W];
-        double                        batch_power = 0;
-        if constexpr (lanes_of<V> == W)
-          {
-            // one kernel, inlined here, for both kinds of batch (a kernel
-            // called as a function, or inlined at two places, took 8-10 %
-            // longer): a family's vertex vectors over the children by
-            // permutations of the aligned grid vectors
-            alignas(64) double ub[8 * 3 * W], vb[8 * 3 * W];
-            const double      *u_batch = u_gathered[slot], *v_batch = v_gathered[slot];
-            if (in_family)
-              {
-                expand_family(ug[slot], ub, std::make_integer_sequence<unsigned int, 8>{});
-                if constexpr (with_damping)
-                  expand_family(vg[slot], vb, std::make_integer_sequence<unsigned int, 8>{});
-                u_batch = ub;
-                v_batch = vb;
-              }
-            batch_power = batch_forces<with_damping, with_energies>(data,
-                                                                    lame_lambda,
-                                                                    lame_mu,
-                                                                    BatchField<V>{u_batch},
-                                                                    BatchField<V>{v_batch},
-                                                                    fb,
-                                                                    0.,
-                                                                    &batch_energies,
-                                                                    kappa_ref);
-          }
-        else
-          {
-            // the kernel once per part of the batch that its vector holds
-            const auto run_parts = [&](const auto &field_of) {
-#pragma GCC unroll 4
-              for (unsigned int lane = 0; lane < W; lane += lanes_of<V>)
-                batch_power = batch_forces<with_damping, with_energies>(Data{data.data, lane},
-                                                                        lame_lambda,
-                                                                        lame_mu,
-                                                                        field_of(0, lane),
-                                                                        field_of(1, lane),
-                                                                        fb + lane,
-                                                                        batch_power,
-                                                                        &batch_energies,
-                                                                        kappa_ref + lane);
-            };
-            if (!in_family)
-              run_parts([&](const unsigned int field, const unsigned int lane) {
-                return BatchField<V>{(field == 0 ? u_gathered[slot] : v_gathered[slot]) + lane};
-              });
-            else
-              // narrower vectors read the grid values in place
-              run_parts([&](const unsigned int field, const unsigned int lane) {
-                return FamilyGridField<V>{field == 0 ? ug[slot] : vg[slot], lane};
-              });
-          }
-        power += batch_power;
+          gather_batch<with_damping>(batch + 1, slot ^ 1, U, V, slots);
+        const bool in_family = family != numbers::invalid_unsigned_int;
+        power += batch_kernel<Data, with_damping, with_energies>(
+          data, in_family, slot, slots, fb, batch_energies, &batch_kappa_ref[std::size_t(batch) * W]);
         if (in_family)
-          {
-            scatter_family(F,
-                           &family_nodes[std::size_t(family) * 27],
-                           fb,
-                           std::make_integer_sequence<unsigned int, 8>{});
-            continue;
-          }
-        const unsigned int n_valid = std::min(W, n_cells - batch * W);
-        for (unsigned int a = 0; a < 8; ++a)
-          for (unsigned int l = 0; l < n_valid; ++l)
-            {
-              const unsigned int idx = nodes[a * W + l];
-              for (unsigned int d = 0; d < 3; ++d)
-                F[idx + d] += fb[(a * 3 + d) * W + l];
-            }
+          scatter_family(F,
+                         &family_nodes[std::size_t(family) * 27],
+                         fb,
+                         std::make_integer_sequence<unsigned int, 8>{});
+        else
+          scatter_batch(batch, fb, F);
       }
     if constexpr (with_energies)
       {

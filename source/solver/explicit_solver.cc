@@ -4,10 +4,12 @@
 #include <wheelrail/base/stopwatch.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/explicit_solver.h>
+#include <wheelrail/solver/rotation.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 
 namespace WheelRail
 {
@@ -42,18 +44,6 @@ namespace WheelRail
           f_ext.local_element(i)    = 0;
         }
 
-    // the wheel's nodes for the run-up damping of its rigid motion: their
-    // x DoFs in DoF order (a node's y and z DoFs follow its x DoF)
-    runup_nodes.clear();
-    for (unsigned int k = 0; k < mass.locally_owned_size(); ++k)
-      if (node_material[k] == Geometry::MaterialIds::wheel && node_component[k] == 0)
-        {
-          AssertThrow(k + 2 < mass.locally_owned_size() && node_component[k + 2] == 2 &&
-                        node_material[k + 2] == Geometry::MaterialIds::wheel,
-                      ExcInternalError());
-          runup_nodes.push_back({node_points[k][0], node_points[k][2], k});
-        }
-
     prescribed = prescribed_dofs(prm, *this, bore_dofs);
     for (const PrescribedDof &p : prescribed)
       inv_mass.local_element(p.index) = 0;
@@ -81,36 +71,11 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::attach_wheelset(Wheelset *ws)
+  ExplicitSolver::attach_rigid_body(RigidBodyCoupling *body)
   {
-    wheelset = ws;
-    if (wheelset == nullptr)
-      return;
-    const Point<dim> centre   = Geometry::wheel_centre(prm.geometry);
-    double           local[2] = {0, 0};
-    for (const auto &p : prescribed)
-      if (p.kind == BoundaryKind::rigid_axle && p.component == 0)
-        {
-          const Tensor<1, dim> r = node_points[p.index] - centre;
-          local[0] += mass.local_element(p.index);
-          local[1] += mass.local_element(p.index) * (r[0] * r[0] + r[2] * r[2]);
-        }
-    // polar inertia of the whole FE wheel about the axle
-    double wheel_inertia = 0;
-    for (unsigned int i = 0; i < mass.locally_owned_size(); ++i)
-      if (node_material[i] == Geometry::MaterialIds::wheel && node_component[i] == 0)
-        {
-          const Tensor<1, dim> r = node_points[i] - centre;
-          wheel_inertia += mass.local_element(i) * (r[0] * r[0] + r[2] * r[2]);
-        }
-    double global[2];
-    Utilities::MPI::sum(ArrayView<const double>(local, 2),
-                        mpi_communicator,
-                        ArrayView<double>(global, 2));
-    wheelset->set_bore_inertia(global[0],
-                               global[1],
-                               total_mass(Geometry::MaterialIds::wheel),
-                               Utilities::MPI::sum(wheel_inertia, mpi_communicator));
+    rigid_body = body;
+    if (rigid_body != nullptr)
+      rigid_body->connect(*this, prescribed);
   }
 
 
@@ -132,18 +97,22 @@ namespace WheelRail
                                   const bool        f_is_zero,
                                   StrainEnergies   *strain)
   {
-    Clock::time_point clock = Clock::now();
-    const double      power = element_forces(u_in, v_in, f_out, f_is_zero, strain);
-    times.elements += lap(clock);
+    double power;
+    {
+      const ScopedTime timer(times.elements);
+      power = element_forces(u_in, v_in, f_out, f_is_zero, strain);
+    }
     if (with_contact && contact != nullptr)
       {
+        const ScopedTime timer(times.contact);
         contact->add_forces(u_in, dt, advance, f_out);
-        times.contact += lap(clock);
       }
-    condense(f_out);
-    times.update += lap(clock);
+    {
+      const ScopedTime timer(times.update);
+      condense(f_out);
+    }
+    const ScopedTime timer(times.communication);
     f_out.compress(VectorOperation::add);
-    times.communication += lap(clock);
     return power;
   }
 
@@ -181,24 +150,58 @@ namespace WheelRail
   ExplicitSolver::step(Energies *energies)
   {
     Assert(dt > 0, ExcInternalError());
-    const bool   first = (n_steps == 0);
-    const double h     = first ? 0.5 * dt : dt; // v_{1/2} = v_0 + dt/2 a_0
-
-    Clock::time_point clock        = Clock::now();
-    double            gravity_work = 0;
+    StepTerms terms(n_steps == 0, dt);
     if (energies)
-      {
-        energies->time = t;
-        energies->step = n_steps;
-        for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
-          gravity_work += f_ext.local_element(i) * (u.local_element(i) - u0.local_element(i));
-        times.energies += lap(clock);
-      }
+      begin_energies(*energies, terms);
+    terms.damping_power = internal_and_contact_forces(energies);
+    {
+      const ScopedTime timer(times.update);
+      add_rigid_body_damping(terms);
+      add_applied_forces(terms);
+      take_net_forces();
+      update_free_dofs(terms, energies != nullptr);
+      add_applied_work(terms);
+      if (rigid_body)
+        rigid_body->advance(prescribed, u, terms.h, dt, t);
+      update_prescribed(terms, energies != nullptr);
+    }
+    if (energies)
+      collect_energies(*energies, terms);
+    accumulate(terms);
+    exchange_ghosts();
+    t += dt;
+    ++n_steps;
+    ++times.steps;
+  }
 
+
+
+  ExplicitSolver::StepTerms::StepTerms(const bool first, const double dt)
+    : first(first)
+    , h(first ? 0.5 * dt : dt) // v_{1/2} = v_0 + dt/2 a_0
+  {}
+
+
+
+  void
+  ExplicitSolver::begin_energies(Energies &energies, StepTerms &terms)
+  {
+    const ScopedTime timer(times.energies);
+    energies.time = t;
+    energies.step = n_steps;
+    for (unsigned int i = 0; i < u.locally_owned_size(); ++i)
+      terms.gravity_work += f_ext.local_element(i) * (u.local_element(i) - u0.local_element(i));
+  }
+
+
+
+  double
+  ExplicitSolver::internal_and_contact_forces(Energies *energies)
+  {
     // the strain energies at t_n come from the force pass over the cells
     const bool     damping = damping_model() != DampingModel::none;
     StrainEnergies strain;
-    double         power = assemble_forces(
+    const double   power = assemble_forces(
       u, damping ? &v : nullptr, f, true, true, f_cleared, energies ? &strain : nullptr);
     if (energies)
       {
@@ -206,78 +209,127 @@ namespace WheelRail
         energies->hourglass           = strain.hourglass;
         energies->hourglass_reference = strain.hourglass_reference;
       }
-    double runup_work = 0;
-    if (wheelset && t < prm.wheelset.runup_time && prm.wheelset.runup_damping > 0)
-      power += add_runup_damping(h, runup_work);
-    clock = Clock::now();
+    return power;
+  }
 
+
+
+  void
+  ExplicitSolver::add_rigid_body_damping(StepTerms &terms)
+  {
+    if (rigid_body && rigid_body->damps(t))
+      terms.damping_power += rigid_body->add_damping(u, v, f, terms.h, terms.rigid_body_work);
+  }
+
+
+
+  void
+  ExplicitSolver::add_applied_forces(StepTerms &terms)
+  {
     // applied forces at t_n (enter f with the sign of internal forces)
-    Tensor<1, dim> applied_total;
-    double         work_step = apply_forces(h, applied_total) + runup_work;
+    terms.work = apply_forces(terms.h, terms.applied_total) + terms.rigid_body_work;
+  }
 
-    double       *U = u.begin();
-    double       *V = v.begin();
-    double       *F = f.begin();
-    const double *G = f_ext.begin();
-    // the net forces that the prescribed DoFs and the axle need after the
-    // update, which clears f behind itself (f = 0 for the next step's
+
+
+  void
+  ExplicitSolver::take_net_forces()
+  {
+    // the net forces that the prescribed DoFs and the rigid body need after
+    // the update, which clears f behind itself (f = 0 for the next step's
     // assembly without a pass of its own over the vector)
+    const double *force          = f.begin();
+    const double *external_force = f_ext.begin();
     for (auto &p : prescribed)
       {
         const unsigned int n_components =
           (p.kind == BoundaryKind::rigid_axle && p.component == 0) ? 3 : 1;
         for (unsigned int c = 0; c < n_components; ++c)
-          p.net_force[c] = G[p.index + c] - F[p.index + c];
+          p.net_force[c] = external_force[p.index + c] - force[p.index + c];
       }
-    const double      *IM = inv_mass.begin();
-    const double      *M  = mass.begin();
-    const unsigned int n  = u.locally_owned_size();
-    double             ke = 0;
-    if (energies == nullptr)
+  }
+
+
+
+  void
+  ExplicitSolver::update_free_dofs(StepTerms &terms, const bool with_energies)
+  {
+    const double       h              = terms.h;
+    double            *displacement   = u.begin();
+    double            *velocity       = v.begin();
+    double            *force          = f.begin();
+    const double      *external_force = f_ext.begin();
+    const double      *inverse_mass   = inv_mass.begin();
+    const double      *lumped         = mass.begin();
+    const unsigned int n              = u.locally_owned_size();
+    if (!with_energies)
       {
         if (!nodal_update_prepared)
           prepare_nodal_update();
         if (nodal_update.active())
-          nodal_update.apply(h, dt, U, V, F);
+          nodal_update.apply(h, dt, displacement, velocity, force);
         else
-          NodalUpdate::apply_per_dof(h, dt, IM, G, n, U, V, F);
+          NodalUpdate::apply_per_dof(
+            h, dt, inverse_mass, external_force, n, displacement, velocity, force);
       }
     else
       {
+        // the same update, with the kinetic energy of the mid-step velocity
+        double kinetic = 0;
         for (unsigned int i = 0; i < n; ++i)
           {
-            const double vo = V[i];
-            V[i] += h * IM[i] * (G[i] - F[i]);
-            U[i] += dt * V[i];
-            F[i]            = 0;
-            const double va = first ? vo : 0.5 * (vo + V[i]);
-            if (IM[i] > 0)
-              ke += 0.5 * M[i] * va * va;
+            const double v_old = velocity[i];
+            velocity[i] += h * inverse_mass[i] * (external_force[i] - force[i]);
+            displacement[i] += dt * velocity[i];
+            force[i]            = 0;
+            const double v_mid = terms.first ? v_old : 0.5 * (v_old + velocity[i]);
+            if (inverse_mass[i] > 0)
+              kinetic += 0.5 * lumped[i] * v_mid * v_mid;
           }
+        terms.kinetic = kinetic;
       }
-
     f_cleared = true;
+  }
+
+
+
+  void
+  ExplicitSolver::add_applied_work(StepTerms &terms) const
+  {
+    // the applied forces' work with the new velocity (the old one is in
+    // apply_forces())
+    const double *velocity = v.begin();
     for (const auto &[i, d, w] : applied)
-      work_step += 0.5 * h * w * applied_total[d] * V[i];
+      terms.work += 0.5 * terms.h * w * terms.applied_total[d] * velocity[i];
+  }
 
-    if (wheelset)
-      advance_wheelset(h);
-    const double t_new = t + dt;
-    update_prescribed(h, first, energies != nullptr, work_step, ke);
-    if (energies)
-      collect_energies(*energies, ke, gravity_work, power, h, work_step, first);
-    damping_dissipation += h * power;
-    boundary_work += work_step;
-    times.update += lap(clock);
 
-    u.update_ghost_values();
-    v.update_ghost_values();
-    times.communication += lap(clock);
+
+  void
+  ExplicitSolver::accumulate(const StepTerms &terms)
+  {
+    const ScopedTime timer(times.update);
+    // h P rounded before it is added, not fused into one multiply-add:
+    // the sum's bits as the step has always had them (the compiler paired
+    // the two additions into one vector add there)
+    double dissipated = terms.h * terms.damping_power;
+    asm("" : "+x"(dissipated));
+    damping_dissipation += dissipated;
+    boundary_work += terms.work;
+  }
+
+
+
+  void
+  ExplicitSolver::exchange_ghosts()
+  {
+    {
+      const ScopedTime timer(times.communication);
+      u.update_ghost_values();
+      v.update_ghost_values();
+    }
+    const ScopedTime timer(times.update);
     distribute(u, &v);
-    times.update += lap(clock);
-    t = t_new;
-    ++n_steps;
-    ++times.steps;
   }
 
 
@@ -324,45 +376,14 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::advance_wheelset(const double h)
+  ExplicitSolver::update_prescribed(StepTerms &terms, const bool with_energies)
   {
-    // the rigid axle: the FE forces on the bore nodes and their moment
-    const double    *U        = u.begin();
-    const Point<dim> axle     = wheelset->axle_position();
-    double           local[4] = {0, 0, 0, 0};
-    // per bore vertex (its x-DoF; y and z follow contiguously)
-    for (const auto &p : prescribed)
-      if (p.kind == BoundaryKind::rigid_axle && p.component == 0)
-        {
-          const unsigned int i  = p.index;
-          const double       fx = p.net_force[0], fy = p.net_force[1], fz = p.net_force[2];
-          const double       rx = node_points[i][0] + U[i] - axle[0];
-          const double       rz = node_points[i][2] + U[i + 2] - axle[2];
-          local[0] += fx;
-          local[1] += fy;
-          local[2] += fz;
-          local[3] += rz * fx - rx * fz;
-        }
-    double global[4];
-    Utilities::MPI::sum(ArrayView<const double>(local, 4),
-                        mpi_communicator,
-                        ArrayView<double>(global, 4));
-    wheelset->advance(Tensor<1, dim>({global[0], global[1], global[2]}), global[3], h, dt, t);
-  }
-
-
-  void
-  ExplicitSolver::update_prescribed(const double h,
-                                    const bool   first,
-                                    const bool   with_energies,
-                                    double      &work,
-                                    double      &ke)
-  {
-    double       *U = u.begin();
-    double       *V = v.begin();
-    const double *M = mass.begin();
+    const double  h            = terms.h;
+    double       *displacement = u.begin();
+    double       *velocity     = v.begin();
+    const double *lumped       = mass.begin();
     // prescribed DoFs: fixed, velocity function (at the middle of the
-    // step), spinning axle, rigid axle
+    // step), spinning axle, rigid body
     if (prescribed_velocity)
       prescribed_velocity->set_time(t + 0.5 * dt);
     const double     t_new  = t + dt;
@@ -370,7 +391,8 @@ namespace WheelRail
     const double     omega  = prm.initial.wheel_angular_velocity;
     // the axle's angle at t_new, its cosine and sine once for all its DoFs
     const double spin_c = std::cos(omega * t_new), spin_s = std::sin(omega * t_new);
-    const auto   bore = wheelset ? wheelset->bore_motion() : Wheelset::BoreMotion{};
+    const std::function<Tensor<1, dim>(const Point<dim> &)> body_motion =
+      rigid_body ? rigid_body->coupled_motion() : nullptr;
     for (auto &p : prescribed)
       {
         double u_new = p.u_prev;
@@ -381,44 +403,39 @@ namespace WheelRail
             const Tensor<1, dim> r = node_points[p.index] - centre;
             u_new                  = (rotate_about_y(r, spin_c, spin_s) - r)[p.component];
           }
-        else if (p.kind == BoundaryKind::rigid_axle)
-          u_new = bore(node_points[p.index])[p.component];
+        else if (p.kind == BoundaryKind::rigid_axle && body_motion)
+          u_new = body_motion(node_points[p.index])[p.component];
         const double v_new = (u_new - p.u_prev) / dt;
         // reaction that enforces the motion, and its work over the step
         // over [t_{n-1/2}, t_{n+1/2}] (the first step: [0, dt/2])
-        // (the rigid axle's bore nodes are part of the wheelset's balance)
+        // (the rigid body's nodes are part of its own balance)
         if (p.kind != BoundaryKind::rigid_axle)
           {
-            const double r = M[p.index] * (v_new - p.v_prev) / h - p.net_force[0];
-            work += r * h * 0.5 * (p.v_prev + v_new);
+            const double reaction = lumped[p.index] * (v_new - p.v_prev) / h - p.net_force[0];
+            terms.work += reaction * h * 0.5 * (p.v_prev + v_new);
           }
-        const double va = first ? p.v_prev : 0.5 * (p.v_prev + v_new);
+        const double v_mid = terms.first ? p.v_prev : 0.5 * (p.v_prev + v_new);
         if (with_energies)
-          ke += 0.5 * M[p.index] * va * va;
-        U[p.index] = u_new;
-        V[p.index] = v_new;
-        p.u_prev   = u_new;
-        p.v_prev   = v_new;
+          terms.kinetic += 0.5 * lumped[p.index] * v_mid * v_mid;
+        displacement[p.index] = u_new;
+        velocity[p.index]     = v_new;
+        p.u_prev              = u_new;
+        p.v_prev              = v_new;
       }
   }
 
 
   void
-  ExplicitSolver::collect_energies(Energies    &energies,
-                                   const double ke,
-                                   const double gravity_work,
-                                   const double damping_power,
-                                   const double h,
-                                   const double work_step,
-                                   const bool   first) const
+  ExplicitSolver::collect_energies(Energies &energies, const StepTerms &terms)
   {
+    const ScopedTime timer(times.energies);
     // dissipation and boundary work up to t_n: all earlier steps plus
     // half of the current one (none at t_0)
-    const double half     = first ? 0. : 0.5;
-    const double local[7] = {ke,
-                             gravity_work,
-                             damping_dissipation + half * h * damping_power,
-                             boundary_work + half * work_step,
+    const double half     = terms.first ? 0. : 0.5;
+    const double local[7] = {terms.kinetic,
+                             terms.gravity_work,
+                             damping_dissipation + half * terms.h * terms.damping_power,
+                             boundary_work + half * terms.work,
                              energies.internal,
                              energies.hourglass,
                              energies.hourglass_reference};
@@ -439,14 +456,8 @@ namespace WheelRail
         energies.friction = contact->friction_dissipation();
         energies.damping += contact->damping_dissipation();
       }
-    if (wheelset)
-      {
-        // replicated: axle, sprung mass, suspension, torque
-        energies.kinetic += wheelset->kinetic();
-        energies.internal += wheelset->spring_energy();
-        energies.damping += wheelset->damper_dissipation();
-        energies.external_work += wheelset->external_work();
-      }
+    if (rigid_body)
+      rigid_body->add_energies(energies);
   }
 
 

@@ -1,7 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <wheelrail/mesh/geometry.h>
-#include <wheelrail/solver/explicit_solver.h>
+#include <wheelrail/solver/wheelset_coupling.h>
 
 #include <array>
 
@@ -35,109 +35,187 @@ namespace WheelRail
   // the wheelset (external work), the rest, sum f . (v - v_rigid), is
   // dissipated.
   double
-  ExplicitSolver::add_runup_damping(const double h, double &work)
+  WheelsetCoupling::add_damping(const VectorType &u,
+                                const VectorType &v,
+                                VectorType       &f,
+                                const double      h,
+                                double           &work)
   {
-    const double          alpha = prm.wheelset.runup_damping;
-    const Point<dim>      axle  = wheelset->axle_position();
-    const Tensor<1, dim> &Va    = wheelset->axle_velocity();
-    const double          omega = wheelset->angular_velocity();
-    const double         *U     = u.begin();
-    const double         *V     = v.begin();
-    const double         *M     = mass.begin();
-    double               *F     = f.begin();
-    const unsigned int    n     = u.locally_owned_size();
-    const bool            rigid = prm.wheelset.runup_damping_shape == "wheel rigid motion";
+    DampingSums sums;
+    if (shape == RunupDampingShape::wheel_rigid_motion)
+      damp_wheel_rigid_motion(u, v, f, sums);
+    else
+      damp_nodes(u, v, f, sums);
+    work = h * sums.rigid_power;
+    return sums.power;
+  }
 
-    // the node's position relative to the axle (x, z) and its rigid velocity
-    // V_a + omega e_y x r in the DoF's direction (a node's x, y, z DoFs are
-    // contiguous); 0 on the rail
-    const auto rigid_velocity = [&](const unsigned int k, double &rx, double &rz) {
-      const unsigned int first = k - node_component[k];
-      rx                       = node_points[k][0] + U[first] - axle[0];
-      rz                       = node_points[k][2] + U[first + 2] - axle[2];
-      if (node_component[k] == 0)
+
+
+  namespace
+  {
+    /** The damping force alpha m w on a DoF of mass @p mass, velocity
+     *  @p velocity and rigid velocity @p rigid_velocity, added to @p force,
+     *  with its power on the motion relative to the rigid one and on the
+     *  rigid motion added to @p power and @p rigid_power. */
+    inline void
+    damp(const double alpha,
+         const double mass,
+         const double velocity,
+         const double rigid_velocity,
+         const double damped_velocity,
+         double      &force,
+         double      &power,
+         double      &rigid_power)
+    {
+      const double fd = alpha * mass * damped_velocity;
+      force += fd;
+      power += fd * (velocity - rigid_velocity);
+      rigid_power -= fd * rigid_velocity;
+    }
+  } // namespace
+
+
+
+  void
+  WheelsetCoupling::damp_nodes(const VectorType &u,
+                               const VectorType &v,
+                               VectorType       &f,
+                               DampingSums      &sums) const
+  {
+    const Point<dim>               axle     = wheelset.axle_position();
+    const Tensor<1, dim>          &Va       = wheelset.axle_velocity();
+    const double                   omega    = wheelset.angular_velocity();
+    const std::vector<Point<dim>> &nodes    = fe->support_points();
+    const double                  *U        = u.begin();
+    const double                  *V        = v.begin();
+    const double                  *M        = fe->lumped_mass().begin();
+    double                        *F        = f.begin();
+    const unsigned int             n        = u.locally_owned_size();
+
+    // the node's rigid velocity V_a + omega e_y x r (r relative to the
+    // axle) in the DoF's direction (a node's x, y, z DoFs are contiguous);
+    // 0 on the rail
+    const auto rigid_velocity = [&](const unsigned int k) {
+      const unsigned int component = fe->dof_component(k);
+      const unsigned int first     = k - component;
+      const double       rx        = nodes[k][0] + U[first] - axle[0];
+      const double       rz        = nodes[k][2] + U[first + 2] - axle[2];
+      if (component == 0)
         return Va[0] + omega * rz;
-      if (node_component[k] == 2)
+      if (component == 2)
         return Va[2] - omega * rx;
       return 0.;
     };
-
-    // the damping force on DoF k, alpha m (damped velocity w), with its
-    // power on the motion relative to the rigid one (velocity vr) and on
-    // the rigid motion
-    double     power = 0, rigid_power = 0;
-    const auto damp = [&](const unsigned int k, const double vr, const double w) {
-      const double fd = alpha * M[k] * w;
-      F[k] += fd;
-      power += fd * (V[k] - vr);
-      rigid_power -= fd * vr;
-    };
-    if (rigid)
-      {
-        // the wheel's mass, centre of mass (relative to the axle), momentum,
-        // angular momentum and polar moment in the rolling plane, summed
-        // over the ranks; the damped velocity is
-        // w = (V_c - V_a) + (Omega - omega) e_y x (r - r_c). Over the wheel's
-        // nodes (runup_nodes: the x DoF, z two further), x then z, in DoF
-        // order as a loop over all DoFs would sum them.
-        // mass (x DoFs), mass (z DoFs), sum m rz, sum m rx, sum m r^2,
-        // P_x, P_z, L_y = sum m (rz v_x - rx v_z)
-        std::array<double, 8> s = {{0, 0, 0, 0, 0, 0, 0, 0}};
-        for (const RunupNode &node : runup_nodes)
-          {
-            const unsigned int kx = node.dof, kz = kx + 2;
-            const double       rx = node.x + U[kx] - axle[0];
-            const double       rz = node.z + U[kz] - axle[2];
-            s[0] += M[kx];
-            s[2] += M[kx] * rz;
-            s[4] += M[kx] * rz * rz;
-            s[5] += M[kx] * V[kx];
-            s[7] += M[kx] * rz * V[kx];
-            s[1] += M[kz];
-            s[3] += M[kz] * rx;
-            s[4] += M[kz] * rx * rx;
-            s[6] += M[kz] * V[kz];
-            s[7] -= M[kz] * rx * V[kz];
-          }
-        std::array<double, 8> g;
-        Utilities::MPI::sum(ArrayView<const double>(s.data(), 8),
-                            mpi_communicator,
-                            ArrayView<double>(g.data(), 8));
-        double Vcx = 0, Vcz = 0, rcx = 0, rcz = 0, dOmega = 0;
-        if (g[0] > 0 && g[1] > 0)
-          {
-            rcz = g[2] / g[0];
-            rcx = g[3] / g[1];
-            Vcx = g[5] / g[0];
-            Vcz = g[6] / g[1];
-            // about the centre of mass
-            const double J = g[4] - g[2] * rcz - g[3] * rcx;
-            const double L = g[7] - (g[2] * Vcx - g[3] * Vcz);
-            if (J > 0)
-              dOmega = L / J - omega;
-          }
-        // the reference motion: the centre of mass with the axle, rotation
-        // omega about it
-        for (const RunupNode &node : runup_nodes)
-          {
-            const unsigned int kx = node.dof, kz = kx + 2;
-            const double       rx = node.x + U[kx] - axle[0];
-            const double       rz = node.z + U[kz] - axle[2];
-            damp(kx, Va[0] + omega * (rz - rcz), Vcx - Va[0] + dOmega * (rz - rcz));
-            damp(kz, Va[2] - omega * (rx - rcx), Vcz - Va[2] - dOmega * (rx - rcx));
-          }
-        work = h * rigid_power;
-        return power;
-      }
-
+    // the sums in locals, as scalars: in the struct the compiler pairs
+    // them into vector additions, without the multiply-adds of their bits
+    double power = 0, rigid_power = 0;
     for (unsigned int k = 0; k < n; ++k)
       {
-        const bool   wheel = node_material[k] == Geometry::MaterialIds::wheel;
-        double       rx, rz;
-        const double vr = wheel ? rigid_velocity(k, rx, rz) : 0.;
-        damp(k, vr, V[k] - vr);
+        const bool   wheel = fe->dof_material(k) == Geometry::MaterialIds::wheel;
+        const double vr    = wheel ? rigid_velocity(k) : 0.;
+        damp(runup_damping, M[k], V[k], vr, V[k] - vr, F[k], power, rigid_power);
       }
-    work = h * rigid_power;
-    return power;
+    sums.power       = power;
+    sums.rigid_power = rigid_power;
+  }
+
+
+
+  WheelsetCoupling::RigidFit
+  WheelsetCoupling::wheel_rigid_fit(const VectorType &u, const VectorType &v) const
+  {
+    const Point<dim> axle  = wheelset.axle_position();
+    const double     omega = wheelset.angular_velocity();
+    const double    *U     = u.begin();
+    const double    *V     = v.begin();
+    const double    *M     = fe->lumped_mass().begin();
+    // the wheel's mass, centre of mass (relative to the axle), momentum,
+    // angular momentum and polar moment in the rolling plane, summed
+    // over the ranks. Over the wheel's nodes (the x DoF, z two further),
+    // x then z, in DoF order as a loop over all DoFs would sum them:
+    // mass (x DoFs), mass (z DoFs), sum m rz, sum m rx, sum m r^2,
+    // P_x, P_z, L_y = sum m (rz v_x - rx v_z)
+    std::array<double, 8> s = {{0, 0, 0, 0, 0, 0, 0, 0}};
+    for (const WheelNode &node : wheel_nodes)
+      {
+        const unsigned int kx = node.dof, kz = kx + 2;
+        const double       rx = node.x + U[kx] - axle[0];
+        const double       rz = node.z + U[kz] - axle[2];
+        s[0] += M[kx];
+        s[2] += M[kx] * rz;
+        s[4] += M[kx] * rz * rz;
+        s[5] += M[kx] * V[kx];
+        s[7] += M[kx] * rz * V[kx];
+        s[1] += M[kz];
+        s[3] += M[kz] * rx;
+        s[4] += M[kz] * rx * rx;
+        s[6] += M[kz] * V[kz];
+        s[7] -= M[kz] * rx * V[kz];
+      }
+    std::array<double, 8> g;
+    Utilities::MPI::sum(ArrayView<const double>(s.data(), 8),
+                        mpi_communicator,
+                        ArrayView<double>(g.data(), 8));
+    RigidFit fit;
+    if (g[0] > 0 && g[1] > 0)
+      {
+        fit.rcz = g[2] / g[0];
+        fit.rcx = g[3] / g[1];
+        fit.Vcx = g[5] / g[0];
+        fit.Vcz = g[6] / g[1];
+        // about the centre of mass
+        const double J = g[4] - g[2] * fit.rcz - g[3] * fit.rcx;
+        const double L = g[7] - (g[2] * fit.Vcx - g[3] * fit.Vcz);
+        if (J > 0)
+          fit.dOmega = L / J - omega;
+      }
+    return fit;
+  }
+
+
+
+  void
+  WheelsetCoupling::damp_wheel_rigid_motion(const VectorType &u,
+                                            const VectorType &v,
+                                            VectorType       &f,
+                                            DampingSums      &sums) const
+  {
+    const Point<dim>      axle  = wheelset.axle_position();
+    const Tensor<1, dim> &Va    = wheelset.axle_velocity();
+    const double          omega = wheelset.angular_velocity();
+    const double         *U     = u.begin();
+    const double         *V     = v.begin();
+    const double         *M     = fe->lumped_mass().begin();
+    double               *F     = f.begin();
+    // the damped velocity is w = (V_c - V_a) + (Omega - omega) e_y x (r - r_c),
+    // against the reference motion: the centre of mass with the axle,
+    // rotation omega about it
+    const RigidFit fit   = wheel_rigid_fit(u, v);
+    double         power = 0, rigid_power = 0; // as in damp_nodes()
+    for (const WheelNode &node : wheel_nodes)
+      {
+        const unsigned int kx = node.dof, kz = kx + 2;
+        const double       rx = node.x + U[kx] - axle[0];
+        const double       rz = node.z + U[kz] - axle[2];
+        damp(runup_damping,
+             M[kx],
+             V[kx],
+             Va[0] + omega * (rz - fit.rcz),
+             fit.Vcx - Va[0] + fit.dOmega * (rz - fit.rcz),
+             F[kx],
+             power,
+             rigid_power);
+        damp(runup_damping,
+             M[kz],
+             V[kz],
+             Va[2] - omega * (rx - fit.rcx),
+             fit.Vcz - Va[2] - fit.dOmega * (rx - fit.rcx),
+             F[kz],
+             power,
+             rigid_power);
+      }
+    sums.power       = power;
+    sums.rigid_power = rigid_power;
   }
 } // namespace WheelRail

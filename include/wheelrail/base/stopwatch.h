@@ -1,7 +1,8 @@
 /**
  * @file stopwatch.h
- * The laps of the per-part step timings (elements, contact, update, ...):
- * a steady clock read between the parts of a step.
+ * The per-part step timings (elements, contact, update, ...): a steady
+ * clock read between the parts of a step (lap()), or around one part
+ * (ScopedTime).
  */
 #ifndef wheelrail_stopwatch_h
 #define wheelrail_stopwatch_h
@@ -21,6 +22,31 @@ namespace WheelRail
     t0                         = t1;
     return s;
   }
+
+  /**
+   * Adds the wall seconds of its own lifetime to a sum: a block of a step
+   * opened with `const ScopedTime timer(times.update);` is timed as that
+   * part, without clock calls between the lines of the physics.
+   */
+  class ScopedTime
+  {
+  public:
+    explicit ScopedTime(double &sum)
+      : sum(sum)
+      , start(Clock::now())
+    {}
+    ~ScopedTime()
+    {
+      sum += std::chrono::duration<double>(Clock::now() - start).count();
+    }
+    ScopedTime(const ScopedTime &) = delete;
+    ScopedTime &
+    operator=(const ScopedTime &) = delete;
+
+  private:
+    double                 &sum;
+    const Clock::time_point start;
+  };
 } // namespace WheelRail
 
 #endif

@@ -3,7 +3,8 @@
  * What the contact computes, as output and post-processing read it: the
  * state of a slave node (ContactNodeState), the contact results carried to
  * a surface node from all passes (NodalContact, with the stick/slip tests
- * of eqs. 5 and 6), an active slave-face pair (ContactPair), the totals of
+ * of eqs. 5 and 6), a slave's closest point on its master faces
+ * (ClosestPoint), an active slave-face pair (ContactPair), the totals of
  * one evaluation (ContactSummary) and the wall times of its parts
  * (ContactTimes).
  */
@@ -16,6 +17,8 @@
 
 #include <wheelrail/contact/friction_model.h>
 #include <wheelrail/parameters/parameters.h>
+
+#include <limits>
 
 namespace WheelRail
 {
@@ -111,6 +114,20 @@ namespace WheelRail
     {
       return in_contact() && slip_share > 0.5;
     }
+  };
+
+  /** The closest point of a slave over its candidate master faces
+   *  (PenaltyContact::closest_point()). */
+  struct ClosestPoint
+  {
+    int            face = -1;       ///< in the pass's faces (-1: none within reach)
+    double         xi = 0, eta = 0; ///< its local coordinates on the face
+    double         gap = 0;         ///< along the normal (< 0: penetration)
+    double         out = 1e300;     ///< how far the projection lies beyond the face (0: on it)
+    Tensor<1, dim> normal;          ///< the averaged nodal normal there
+    /** How far the faces left out for a gap below -margin are from
+     *  counting (PenaltyContact::select_slaves()). */
+    double ignored_slack = std::numeric_limits<double>::infinity();
   };
 
   /** An active slave/master pair for the implicit tangent. */

@@ -305,6 +305,22 @@ namespace WheelRail
                  const types::boundary_id slave_id,
                  const types::boundary_id master_id,
                  Pass                    &pass);
+    /** collect_pass(): this rank's boundary faces packed as doubles,
+     *  slaves (dof, X, area / 4), master faces (4 dofs, 4 X, area, cell
+     *  volume, sign) ... */
+    void
+    pack_boundary_faces(const DoFHandler<dim>   &dof_handler,
+                        const types::boundary_id slave_id,
+                        const types::boundary_id master_id,
+                        std::vector<double>     &slaves,
+                        std::vector<double>     &faces) const;
+    /** ... all ranks' slaves (shared nodes' areas summed), ordered by
+     *  position, with their faces ... */
+    void
+    add_slaves(const std::vector<std::vector<double>> &slave_parts, Pass &pass);
+    /** ... all ranks' master faces by centroid, with their stiffness. */
+    void
+    add_master_faces(const std::vector<std::vector<double>> &face_parts, Pass &pass);
     unsigned int
     node_index(const types::global_dof_index dof, const Point<dim> &X);
     /** Every rank's @p send, concatenated in rank order, into @p recv on
@@ -316,6 +332,18 @@ namespace WheelRail
                             std::vector<T>       &recv);
     void
     search(const LinearAlgebra::distributed::Vector<double> &u);
+    /** The master faces within Search margin of each slave of @p pass (an
+     *  rtree of the faces' boxes; this rank's block of the slaves, then all
+     *  ranks'), packed as (slave, number of faces, faces ascending). */
+    std::vector<unsigned int>
+    query_candidates(const Pass &pass);
+    /** The candidates of @p pass from @p found; marks their nodes and
+     *  those of their faces in @p active. */
+    void
+    assign_candidates(const std::vector<unsigned int> &found,
+                      const std::vector<bool>         &was_candidate,
+                      Pass                            &pass,
+                      std::vector<bool>               &active);
     /** The clearances and motion allowances of this rank's contact nodes
      *  for approach_bound_exceeded(), from the positions at the last
      *  search (contact/approach_trigger.cc). */
@@ -334,6 +362,23 @@ namespace WheelRail
     approach_bound_exceeded(const LinearAlgebra::distributed::Vector<double> &u,
                             const bool                                        advance,
                             Clock::time_point                                &clock);
+    /** add_forces(), in its order: the contact nodes' positions, by a
+     *  search where needed (timed in @p clock) ... */
+    void
+    update_positions(const LinearAlgebra::distributed::Vector<double> &u,
+                     const bool                                        advance,
+                     Clock::time_point                                &clock);
+    /** ... the candidates' motion since the last evaluation and search
+     *  (a rebuild at the next step where one moved too far) ... */
+    void
+    track_candidate_motion();
+    /** ... every pass's slaves, computed and exchanged, the totals ... */
+    void
+    evaluate_passes(const double dt, const bool advance, Clock::time_point &clock);
+    /** ... and their forces on the owned DoFs of @p f (the sign of
+     *  internal forces). */
+    void
+    scatter_forces(LinearAlgebra::distributed::Vector<double> &f) const;
     /** At the first evaluation after setup(): stop the run when a slave
      *  penetrates its master face deeper than the faceting of the surfaces
      *  explains (contact/approach_trigger.cc). */
@@ -434,6 +479,39 @@ namespace WheelRail
      *  states only. */
     void
     compute_slaves(Pass &pass, const double dt, const bool advance);
+    /** The slave Pass::evaluated[@p e] of @p pass: its closest point, and,
+     *  in contact, its penalty force, normal damping and friction. */
+    void
+    compute_slave(Pass &pass, const unsigned int e, const double dt, const bool advance);
+    /** The closest point of the slave at @p xs over the candidate faces
+     *  of candidate @p c: a projection inside a face wins, otherwise the
+     *  nearest face edge. */
+    ClosestPoint
+    closest_point(Pass &pass, const unsigned int c, const Point<dim> &xs);
+    /** The viscous normal force of Contact/Damping ratio on the closing
+     *  rate of the gap, added to the slave's normal force. */
+    void
+    add_normal_damping(ContactNodeState &state,
+                       const double      k,
+                       const double      gap,
+                       const double      dt) const;
+    /** The slip increment of the step: the contact point @p best now
+     *  minus the old contact point (for a new contact the previous position
+     *  @p x_prev projected) on the current master geometry. */
+    Tensor<1, dim>
+    slip_increment(const Pass             &pass,
+                   const ContactNodeState &state,
+                   const ClosestPoint     &best,
+                   const Point<dim>       &x_prev) const;
+    /** The friction law's return map over the slip increment: the
+     *  tangential force, slip and friction dissipation of the slave. */
+    void
+    add_friction(const Pass         &pass,
+                 ContactNodeState   &state,
+                 const ClosestPoint &best,
+                 const Point<dim>   &x_prev,
+                 const double        k,
+                 const double        dt);
     /** After the states of all ranks are in: Pass::resume_motion of the
      *  slaves computed. */
     void
@@ -441,6 +519,14 @@ namespace WheelRail
     /** Every rank computed its share of the candidates: gather all. */
     void
     exchange_states(Pass &pass, const bool advance);
+    /** The (contact, gap) pairs of every rank's block of the candidates
+     *  to all ranks (exchange_gaps, with exchange_counts and _displs). */
+    void
+    all_gather_gaps(Pass &pass);
+    /** The states in contact of every rank's block to all ranks
+     *  (exchange_buffer, in candidate order). */
+    void
+    all_gather_contact_states(const Pass &pass);
     /** The state of a candidate slave at @p xs that is not in contact
      *  (gap @p gap >= 0, or no face within reach), as compute_slaves()
      *  leaves it. */

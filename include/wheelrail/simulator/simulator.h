@@ -31,8 +31,10 @@
 #include <wheelrail/simulator/divergence_check.h>
 #include <wheelrail/solver/explicit_solver.h>
 #include <wheelrail/solver/wheelset.h>
+#include <wheelrail/solver/wheelset_coupling.h>
 #include <wheelrail/verification/samples.h>
 
+#include <array>
 #include <chrono>
 #include <memory>
 #include <sstream>
@@ -65,6 +67,13 @@ namespace WheelRail
     prepare_output_directory();
     void
     print_setup_summary();
+    /** The contact's part of the setup summary. */
+    void
+    print_contact_summary();
+    /** Time integration/Time step, checked against the stable one, or
+     *  the stable step. */
+    void
+    choose_time_step();
     /** Refuse an explicit run of more than 1e8 steps or with a Time step
      *  under a thousandth of the stable one, unless Time integration/Allow
      *  long runs confirms it. */
@@ -80,6 +89,9 @@ namespace WheelRail
      *  forces (Problem/Mode). */
     void
     run_static_check();
+    /** The patch test: u = G X on every node. */
+    void
+    run_patch_test();
     /** The wheel pressed onto the rail by the axle load, against Hertz. */
     void
     run_static_contact();
@@ -142,6 +154,15 @@ namespace WheelRail
                   const double         output_seconds,
                   const unsigned long  n_steps,
                   std::vector<double> &step_seconds) const;
+    /** Every rank's times of the parts of the steps and of the contact,
+     *  on rank 0 (empty on the others). */
+    std::vector<std::vector<double>>
+    gather_part_times(const double output_seconds) const;
+    /** The spread of the step times (this machine's noise: on a shared
+     *  host the same step's time varies by tens of per cent, and with
+     *  several ranks each step waits for the slowest), printed. */
+    std::array<double, 3>
+    step_time_spread(std::vector<double> &step_seconds) const;
 
     // restart.cc
     /** Write the whole run state to OUTDIR/checkpoint/ (write, then
@@ -180,6 +201,8 @@ namespace WheelRail
     std::unique_ptr<ExplicitSolver>           solver;
     std::unique_ptr<PenaltyContact>           contact;
     std::unique_ptr<Wheelset>                 wheelset;
+    /** The wheelset coupled to the FE wheel, for the solver */
+    std::unique_ptr<WheelsetCoupling> wheelset_coupling;
     std::string                               output_directory;
     /** Held by rank 0 from the start to the end of the run. */
     std::unique_ptr<DirectoryLock> lock;

@@ -21,6 +21,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/la_parallel_vector.h>
@@ -61,6 +62,11 @@ namespace WheelRail
     double hourglass           = 0; ///< stored in the hourglass springs
     double hourglass_reference = 0; ///< hourglass energy with QM = 0.1
   };
+
+  namespace ElementKernel
+  {
+    struct BatchEnergies;
+  } // namespace ElementKernel
 
   /** Time Integration/Damping model, decided once at setup. */
   enum class DampingModel
@@ -261,6 +267,23 @@ namespace WheelRail
     find_families();
     void
     setup_lumped_mass();
+    /** The parts of setup_cell_data(): the element data of @p cell in
+     *  lane @p lane of its batch's @p data (mean gradients, hourglass base
+     *  vectors), with its volume @p V0 and sum |B_a|^2 @p BB ... */
+    void
+    cell_geometry(const FEValues<dim>                         &fe_values,
+                  const DoFHandler<dim>::active_cell_iterator &cell,
+                  const unsigned int                           lane,
+                  double                                      *data,
+                  double                                      &V0,
+                  double                                      &BB) const;
+    /** ... the mesh quality and the stable step over the ranks ... */
+    void
+    reduce_mesh_quality(const MeshQuality &local, const double min_dt);
+    /** ... and the force loop's copy with single-precision geometric
+     *  factors (Time integration/Single precision geometry). */
+    void
+    copy_single_precision();
     /** The element force loop over the batches of @p batch_blocks
      *  (@p block_size doubles each), read through @p Data (DoubleData or
      *  SingleData of element_kernel.h); @p with_damping: the stiffness
@@ -276,6 +299,34 @@ namespace WheelRail
                  const double      *V,
                  double            *F,
                  StrainEnergies    *energies) const;
+    /** The parts of element_loop(), force-inlined into it but for the
+     *  gather: the buffers of the nodal values gathered one batch
+     *  ahead ... */
+    struct GatherSlots;
+    /** ... the gather of batch @p batch into slot @p slot ... */
+    template <bool with_damping>
+    void
+    gather_batch(const unsigned int batch,
+                 const unsigned int slot,
+                 const double      *U,
+                 const double      *V,
+                 GatherSlots       &slots) const;
+    /** ... the kernel on the batch's values in slot @p slot (a family's
+     *  expanded from its grid), forces into @p fb; returns the damping
+     *  power ... */
+    template <typename Data, bool with_damping, bool with_energies>
+    double
+    batch_kernel(const Data                           &data,
+                 const bool                            in_family,
+                 const unsigned int                    slot,
+                 GatherSlots                          &slots,
+                 double                               *fb,
+                 ElementKernel::BatchEnergies         &batch_energies,
+                 const double                         *kappa_ref) const;
+    /** ... and the scatter of the forces @p fb of a batch that is not a
+     *  family into @p F. */
+    void
+    scatter_batch(const unsigned int batch, const double *fb, double *F) const;
     /** Request a batch's element data (@p size doubles) into the cache. */
     static void
     prefetch_block(const double *block, const unsigned int size);

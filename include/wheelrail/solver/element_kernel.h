@@ -180,16 +180,112 @@ namespace WheelRail
     }
 
     /**
+     * The strain energy V0 (lambda/2 tr(E)^2 + mu E:E) of the lanes at the
+     * gradient @p H, added to @p energies (batch_forces()). E is formed once
+     * more, from a copy of H that the compiler cannot see through: further
+     * uses of the forces' E would change how it is contracted into FMAs, and
+     * with it the forces' last bits.
+     */
+    template <typename Data, typename V>
+    WHEELRAIL_ALWAYS_INLINE void
+    add_strain_energy(const Data    &data,
+                      const V        V0,
+                      const V        la,
+                      const V        mu,
+                      const V (&H)[3][3],
+                      BatchEnergies *energies)
+    {
+      V h[3][3];
+#pragma GCC unroll 3
+      for (unsigned int i = 0; i < 3; ++i)
+#pragma GCC unroll 3
+        for (unsigned int j = 0; j < 3; ++j)
+          h[i][j] = H[i][j];
+      asm("" : "+m"(h));
+      V e[6];
+      green_lagrange(h, e);
+      const V tr = e[0] + e[1] + e[2];
+      add_lanes(energies->internal + data.lane,
+                V0 * (0.5 * la * tr * tr + mu * symmetric_square(e)));
+    }
+
+    /**
+     * The strain that the stress is formed from, E + beta dE/dt, from the
+     * displacement gradient @p H and the velocity field @p vb, with the
+     * damping power beta V0 (lambda tr(dE/dt)^2 + 2 mu dE/dt : dE/dt)
+     * (batch_forces() with damping). The rate of strain before the strain:
+     * H and L live together only while dE/dt is formed (the fewer tensors
+     * live at once, the fewer of them the compiler keeps on the stack with
+     * 16 vector registers).
+     */
+    template <typename Data, typename VField, typename V>
+    WHEELRAIL_ALWAYS_INLINE V
+    damped_strain(const Data   &data,
+                  const VField &vb,
+                  const V       V0,
+                  const V       la,
+                  const V       mu,
+                  const V (&H)[3][3],
+                  V (&E)[6])
+    {
+      constexpr const unsigned int(&si)[6] = sym_i, (&sj)[6] = sym_j;
+      const V beta = data.beta();
+      V       L[3][3];
+      batch_gradient(data, vb, L);
+      reload_barrier<Data>();
+      // dE/dt = sym(F^T L), F = I + H
+      V Ed[6];
+#pragma GCC unroll 6
+      for (unsigned int q = 0; q < 6; ++q)
+        {
+          const unsigned int i = si[q], j = sj[q];
+          V                  ftl = L[i][j] + L[j][i];
+#pragma GCC unroll 3
+          for (unsigned int k = 0; k < 3; ++k)
+            ftl += H[k][i] * L[k][j] + L[k][i] * H[k][j];
+          Ed[q] = 0.5 * ftl;
+        }
+      const V trEd  = Ed[0] + Ed[1] + Ed[2];
+      const V power = beta * V0 * (la * trEd * trEd + 2. * mu * symmetric_square(Ed));
+      green_lagrange(H, E);
+#pragma GCC unroll 6
+      for (unsigned int q = 0; q < 6; ++q)
+        E[q] += beta * Ed[q];
+      return power;
+    }
+
+    /** The second Piola-Kirchhoff stress S = lambda tr(E) I + 2 mu E of
+     *  the strain @p E (six components), as a full tensor. */
+    template <typename V>
+    WHEELRAIL_ALWAYS_INLINE void
+    svk_stress(const V (&E)[6], const V la, const V mu, V (&S)[3][3])
+    {
+      constexpr const unsigned int(&si)[6] = sym_i, (&sj)[6] = sym_j;
+      const V trE = E[0] + E[1] + E[2];
+#pragma GCC unroll 6
+      for (unsigned int q = 0; q < 6; ++q)
+        {
+          const V sq      = q < 3 ? 2. * mu * E[q] + la * trE : 2. * mu * E[q];
+          S[si[q]][sj[q]] = sq;
+          S[sj[q]][si[q]] = sq;
+        }
+    }
+
+    /**
      * Element forces of one batch of W cells: one-point total-Lagrangian
      * St. Venant-Kirchhoff stress, element stiffness damping and FB
      * stiffness hourglass forces. f is [vertex][component][lane];
      * every operation acts on all lanes of the vector at once, and all loops are
      * unrolled; the stress and hourglass forces are formed one force
-     * component at a time, so that few tensors are live at once. The symmetric
-     * tensors (E, its rate, S) are formed from their six components, the
-     * damping stress with the elastic one as S = C : (E + beta dE/dt), and
-     * the hourglass sums and their forces by partial Walsh-Hadamard
-     * transforms over the vertex bits. Returns the damping power.
+     * component at a time, so that few tensors are live at once. The
+     * symmetric tensors (E, its rate, S) are formed from their six
+     * components (svk_stress()), the damping stress with the elastic one as
+     * S = C : (E + beta dE/dt) (damped_strain()), and the hourglass sums
+     * and their forces by partial Walsh-Hadamard transforms over the vertex
+     * bits. Returns the damping power. The parts are force-inlined, and the
+     * machine code is the same as with one function body (the loop over the
+     * force components stays here: as a function of its own, inlined, it
+     * changes the register allocation of the single-precision kernel).
      *
      * With @p with_energies the batch's strain energies at u (from the
      * same gradient and hourglass modes as the forces, i.e. the energy
@@ -229,74 +325,18 @@ namespace WheelRail
       V H[3][3];
       batch_gradient(data, ub, H);
       reload_barrier<Data>();
-
-      constexpr const unsigned int(&si)[6] = sym_i, (&sj)[6] = sym_j;
       if constexpr (with_energies)
-        {
-          // E once more, from a copy of H that the compiler cannot see
-          // through: further uses of the forces' E would change how it is
-          // contracted into FMAs, and with it the forces' last bits
-          V h[3][3];
-#pragma GCC unroll 3
-          for (unsigned int i = 0; i < 3; ++i)
-#pragma GCC unroll 3
-            for (unsigned int j = 0; j < 3; ++j)
-              h[i][j] = H[i][j];
-          asm("" : "+m"(h));
-          V e[6];
-          green_lagrange(h, e);
-          const V tr = e[0] + e[1] + e[2];
-          add_lanes(energies->internal + data.lane,
-                    V0 * (0.5 * la * tr * tr + mu * symmetric_square(e)));
-        }
+        add_strain_energy(data, V0, la, mu, H, energies);
 
-      // The rate of strain before the strain: H and L live together only
-      // while dE/dt is formed (the fewer tensors live at once, the fewer
-      // of them the compiler keeps on the stack with 16 vector registers).
       V power = {};
       V E[6];
       if constexpr (with_damping)
-        {
-          const V beta = data.beta();
-          V       L[3][3];
-          batch_gradient(data, vb, L);
-          reload_barrier<Data>();
-          // dE/dt = sym(F^T L), F = I + H
-          V Ed[6];
-#pragma GCC unroll 6
-          for (unsigned int q = 0; q < 6; ++q)
-            {
-              const unsigned int i = si[q], j = sj[q];
-              V                  ftl = L[i][j] + L[j][i];
-#pragma GCC unroll 3
-              for (unsigned int k = 0; k < 3; ++k)
-                ftl += H[k][i] * L[k][j] + L[k][i] * H[k][j];
-              Ed[q] = 0.5 * ftl;
-            }
-          const V trEd = Ed[0] + Ed[1] + Ed[2];
-          power        = beta * V0 * (la * trEd * trEd + 2. * mu * symmetric_square(Ed));
-          green_lagrange(H, E);
-#pragma GCC unroll 6
-          for (unsigned int q = 0; q < 6; ++q)
-            E[q] += beta * Ed[q];
-        }
+        power = damped_strain(data, vb, V0, la, mu, H, E);
       else
         green_lagrange(H, E);
+      V S[3][3];
+      svk_stress(E, la, mu, S);
 
-      const V trE = E[0] + E[1] + E[2];
-      V       S[3][3];
-#pragma GCC unroll 6
-      for (unsigned int q = 0; q < 6; ++q)
-        {
-          const V sq      = q < 3 ? 2. * mu * E[q] + la * trE : 2. * mu * E[q];
-          S[si[q]][sj[q]] = sq;
-          S[sj[q]][si[q]] = sq;
-        }
-
-      // The forces component by component: row i of the first
-      // Piola-Kirchhoff stress times V0 (T) and the four hourglass forces
-      // of component i need row i of H only, and give the forces' component
-      // i at all eight vertices.
       [[maybe_unused]] V modes = {}; // the squared hourglass modes summed (energies)
 #pragma GCC unroll 3
       for (unsigned int i = 0; i < 3; ++i)

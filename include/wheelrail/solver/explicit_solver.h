@@ -2,7 +2,8 @@
  * @file explicit_solver.h
  * Central-difference time integration (SPEC 2) of the elastic operator
  * (elastic_operator.h) with penalty contact, prescribed and loaded
- * boundaries and the rigid axle of the wheelset.
+ * boundaries and a rigid body coupled through forces (the wheelset:
+ * rigid_body_coupling.h).
  */
 #ifndef wheelrail_solver_explicit_solver_h
 #define wheelrail_solver_explicit_solver_h
@@ -14,49 +15,16 @@
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/boundary_conditions.h>
 #include <wheelrail/solver/elastic_operator.h>
+#include <wheelrail/solver/energies.h>
 #include <wheelrail/solver/nodal_update.h>
-#include <wheelrail/solver/wheelset.h>
+#include <wheelrail/solver/rigid_body_coupling.h>
+#include <wheelrail/solver/step_times.h>
 
 #include <functional>
 #include <memory>
 
 namespace WheelRail
 {
-  /** Energies of the whole model at one instant [J]. */
-  struct Energies
-  {
-    double        time      = 0; ///< t_n, the instant of these values [s]
-    unsigned long step      = 0; ///< n
-    double        kinetic   = 0; ///< with the mid-step velocity v_n
-    double        internal  = 0; ///< St. Venant-Kirchhoff strain energy
-    double        hourglass = 0; ///< energy stored in the hourglass springs
-    /** Hourglass-mode energy with the reference coefficient QM = 0.1,
-     *  also when the control is off: shows spurious modes. */
-    double hourglass_reference = 0;
-    double damping             = 0; ///< dissipated by damping, accumulated
-    double contact             = 0; ///< stored in the penalty springs
-    double friction            = 0; ///< dissipated by friction, accumulated
-    double external_work       = 0; ///< gravity, applied forces, prescribed boundaries
-
-    /** KE + IE + HG + D + contact + friction - W_ext. */
-    double
-    total() const
-    {
-      return kinetic + internal + hourglass + damping + contact + friction - external_work;
-    }
-  };
-
-  /** Wall seconds of this rank spent in the parts of the explicit steps. */
-  struct StepTimes
-  {
-    double        elements      = 0; ///< element kernel: gather, forces, scatter
-    double        contact       = 0; ///< search, projection, friction, contact forces
-    double        update        = 0; ///< central-difference update, constraints, axle
-    double        communication = 0; ///< ghost exchange and force compression
-    double        energies      = 0; ///< energies at statistics steps
-    unsigned long steps         = 0; ///< steps timed
-  };
-
   /**
    * The explicit elastodynamics core: the elastic operator it derives from
    * (DoFs, constraints, element data, lumped mass) plus the state of the
@@ -95,10 +63,11 @@ namespace WheelRail
     {
       this->contact = contact;
     }
-    /** Let the bore nodes move with @p wheelset (Wheel bore = rigid axle):
-     *  passes it the bore nodes' mass and inertia. */
+    /** Let the prescribed DoFs of kind BoundaryKind::rigid_axle move with
+     *  @p body and drive it (nullptr: none); connects it to the DoFs
+     *  (RigidBodyCoupling::connect()). After setup(). Collective. */
     void
-    attach_wheelset(Wheelset *wheelset);
+    attach_rigid_body(RigidBodyCoupling *body);
     /** Set the owned entries of u from a vector with the same layout (e.g.
      *  a static solution); hanging DoFs follow their masters. */
     void
@@ -143,7 +112,14 @@ namespace WheelRail
     void
     set_rolling_velocity(const Tensor<1, dim> &V, const Point<dim> &centre, const double omega);
 
-    /** One central-difference step; energies at t_n if @p energies. */
+    /**
+     * One central-difference step; energies at t_n if @p energies. Its
+     * parts: the internal and contact forces at t_n, the rigid body's
+     * damping and the applied forces, the update of the free DoFs (the
+     * per-node NodalUpdate, or per DoF with the kinetic energy), the rigid
+     * body and the prescribed DoFs, the energies, the ghost exchange. Each
+     * part is timed as one of StepTimes.
+     */
     void
     step(Energies *energies = nullptr);
 
@@ -201,6 +177,22 @@ namespace WheelRail
     bore_displacement() const;
 
   private:
+    /** The terms of one step that its parts pass on: the half or full
+     *  step, the balances of damping and boundary work, the kinetic
+     *  energy. */
+    struct StepTerms
+    {
+      StepTerms(const bool first, const double dt);
+      const bool   first; ///< the first step (a half step from v_0)
+      const double h;     ///< the velocity's step: dt/2 in the first step, else dt
+      double       gravity_work  = 0; ///< f_ext . (u - u_0) at t_n (with energies)
+      double       damping_power = 0; ///< dissipated power of the damping forces
+      double       rigid_body_work = 0; ///< the rigid body's damping's work
+      double       work    = 0; ///< boundary work over the step
+      double       kinetic = 0; ///< this rank's kinetic energy (with energies)
+      Tensor<1, dim> applied_total; ///< applied force at t_n
+    };
+
     /** f = f_int(u) + f_damp(v) - f_contact(u); returns the damping power.
      *  Contact is evaluated for a step (friction advanced) if @p advance.
      *  With @p f_is_zero the caller guarantees f = 0 already (owned and
@@ -218,46 +210,53 @@ namespace WheelRail
      *  half of the step (velocity at t_{n-1/2}). */
     double
     apply_forces(const double h, Tensor<1, dim> &applied_total);
-    /** The rigid axle: the FE forces on the bore nodes and their moment
-     *  move the wheelset over the step. */
+    /** Time, step number and the gravity's work at t_n into @p energies. */
     void
-    advance_wheelset(const double h);
-    /** Wheelset/Run-up damping: adds alpha m (v - v_rigid) to f (the sign of
-     *  internal forces) and returns its dissipated power on the local DoFs,
-     *  alpha m |v - v_rigid|^2; its work on the rigid motion over the step
-     *  (an external work) goes to @p work. */
+    begin_energies(Energies &energies, StepTerms &terms);
+    /** f = f_int(u) + f_damp(v) - f_contact(u) at t_n, contact advanced;
+     *  the strain energies into @p energies if given. Returns the damping
+     *  power. */
     double
-    add_runup_damping(const double h, double &work);
+    internal_and_contact_forces(Energies *energies);
+    /** The rigid body's damping forces into f while it damps. */
+    void
+    add_rigid_body_damping(StepTerms &terms);
+    /** The applied forces at t_n into f, their work over the first half of
+     *  the step and the rigid body's damping's work into StepTerms::work. */
+    void
+    add_applied_forces(StepTerms &terms);
+    /** f_ext - f on the prescribed DoFs (PrescribedDof::net_force), before
+     *  the update clears f. */
+    void
+    take_net_forces();
+    /** The central-difference update of u and v on the free DoFs; clears f.
+     *  With energies, per DoF with the kinetic energy into @p terms. */
+    void
+    update_free_dofs(StepTerms &terms, const bool with_energies);
+    /** The applied forces' work over the second half of the step (with the
+     *  new velocity). */
+    void
+    add_applied_work(StepTerms &terms) const;
+    /** The step's damping dissipation and boundary work into the sums. */
+    void
+    accumulate(const StepTerms &terms);
+    /** Ghost values of u and v, hanging DoFs from their masters. */
+    void
+    exchange_ghosts();
     /** Take the per-node update (NodalUpdate) where the DoFs allow it. */
     void
     prepare_nodal_update();
-    /** Move the prescribed DoFs to t_{n+1}; adds their reactions' work to
-     *  @p work and, with energies, their kinetic energy to @p ke. */
+    /** Move the prescribed DoFs to t_{n+1} (those of the rigid body with
+     *  it); adds their reactions' work and, with energies, their kinetic
+     *  energy to @p terms. */
     void
-    update_prescribed(const double h,
-                      const bool   first,
-                      const bool   with_energies,
-                      double      &work,
-                      double      &ke);
-    /** Sum the energies at t_n over the ranks and add contact and axle. */
+    update_prescribed(StepTerms &terms, const bool with_energies);
+    /** Sum the energies at t_n over the ranks and add contact and the
+     *  rigid body. */
     void
-    collect_energies(Energies    &energies,
-                     const double ke,
-                     const double gravity_work,
-                     const double damping_power,
-                     const double h,
-                     const double work_step,
-                     const bool   first) const;
+    collect_energies(Energies &energies, const StepTerms &terms);
 
     std::vector<unsigned int> bore_dofs;
-    /** A locally owned node of the wheel: its reference x and z and its x
-     *  DoF (add_runup_damping()). */
-    struct RunupNode
-    {
-      double       x, z;
-      unsigned int dof;
-    };
-    std::vector<RunupNode> runup_nodes;
     VectorType             inv_mass; ///< 0 on constrained and prescribed DoFs
     VectorType             f_ext;    ///< gravity, condensed
     VectorType             u0;       ///< displacement at the start
@@ -273,7 +272,7 @@ namespace WheelRail
     std::vector<AppliedForceDof>   applied;
     std::unique_ptr<Function<dim>> applied_force;
     PenaltyContact                *contact  = nullptr;
-    Wheelset                      *wheelset = nullptr;
+    RigidBodyCoupling             *rigid_body = nullptr;
 
     VectorType u, v, f, v_old;
     /** f is zero (the update of the last step cleared it behind itself:

@@ -16,6 +16,7 @@
 #include <wheelrail/contact/penalty_contact.h>
 #include <wheelrail/parameters/parameters.h>
 #include <wheelrail/solver/explicit_solver.h>
+#include <wheelrail/solver/static_tangent.h>
 
 #include <Epetra_MultiVector.h>
 
@@ -30,44 +31,6 @@ namespace WheelRail
     unsigned int newton_iterations = 0; ///< in all load iterations
     unsigned int linear_iterations = 0; ///< CG iterations in all
   };
-
-  /**
-   * The Newton tangent K + sum_p k_p g_p g_p^T: the stiffness matrix K of the
-   * bodies (constant: the one-point element's small-strain stiffness in the
-   * reference configuration) and the rank-one penalty tangent of each active
-   * contact pair, g_p being the pair's gap functional (slave minus the
-   * interpolated master point, along the normal). The contact part is applied
-   * outside the matrix, so K and its AMG preconditioner are built once for
-   * the whole static solve; CG deals with the contact directions the
-   * preconditioner does not see.
-   */
-  class StaticTangent
-  {
-  public:
-    StaticTangent(const TrilinosWrappers::SparseMatrix &K, MPI_Comm comm);
-
-    /** The gap functionals of @p pairs on the free DoFs: hanging DoFs are
-     *  expanded into their masters, fixed DoFs dropped; each rank keeps the
-     *  entries on its owned DoFs. */
-    void
-    set_contact_pairs(const std::vector<ContactPair>  &pairs,
-                      const AffineConstraints<double> &constraints,
-                      const IndexSet                  &owned);
-
-    void
-    vmult(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) const;
-
-  private:
-    const TrilinosWrappers::SparseMatrix &K;
-    MPI_Comm                              comm;
-    std::vector<double>                   stiffness; ///< k_p [N/m]
-    std::vector<unsigned int>             offsets;   ///< pair p: entries [offsets[p], offsets[p+1])
-    std::vector<unsigned int>             local_index; ///< owned DoF, local numbering
-    std::vector<double>                   coefficient; ///< d g_p / d u_dof
-    mutable std::vector<double>           gaps;
-  };
-
-
 
   /**
    * Presses the wheel onto the rail: the bore nodes are moved down rigidly
@@ -93,9 +56,79 @@ namespace WheelRail
     solve(const double target_load, std::ostream &log);
 
   private:
+    /** The hanging-node constraints and the homogeneous Dirichlet
+     *  conditions of the fixed boundaries and the bore. */
+    void
+    make_constraints(const IndexSet &relevant);
+    /** K, with the constraints condensed, once. */
+    void
+    assemble_stiffness(const IndexSet &relevant);
+    /** The AMG of K with the near null space that Static solve/AMG null
+     *  space selects, once. */
+    void
+    initialize_amg();
+
     /** Newton at a fixed bore displacement; returns the contact force. */
     double
     solve_at(const double delta, StaticResult &result, std::ostream &log);
+    /** Move the bore down rigidly by @p delta. */
+    void
+    prescribe_bore(const double delta);
+    /** The residual at the displacement @p v (its owned entries) into
+     *  @p residual, and its norm over the free DoFs. Collective. */
+    double
+    residual_norm(const VectorType &v, VectorType &residual);
+    /** Log Newton iteration @p it; whether it has converged (or stalled
+     *  within 10 x the tolerance). */
+    bool
+    newton_converged(const unsigned int it,
+                     const double       norm,
+                     const double       previous_norm,
+                     const double       load_scale,
+                     std::ostream      &log) const;
+    /** Throw when Static solve/Max Newton iterations are spent. */
+    void
+    check_newton_progress(const unsigned int it,
+                          const double       norm,
+                          const double       previous_norm,
+                          const double       delta,
+                          const double       load_scale) const;
+    /** The relative tolerance of the linear solve (inexact Newton). */
+    double
+    linear_tolerance(const bool   first,
+                     const double reduction,
+                     const double norm,
+                     const double load_scale) const;
+    /** The Newton increment: CG with the AMG on the tangent at the active
+     *  contact pairs, to the relative tolerance @p eta. */
+    TrilinosWrappers::MPI::Vector
+    newton_increment(const VectorType &residual, const double eta, StaticResult &result);
+    /** u + alpha du with the step length alpha halved until the residual
+     *  norm falls below @p norm (8 times at most); returns the new norm,
+     *  leaves the residual in @p residual. */
+    double
+    line_search(const TrilinosWrappers::MPI::Vector &du,
+                const double                         norm,
+                VectorType                          &trial,
+                VectorType                          &residual,
+                std::ostream                        &log);
+    /** Drop the whole wheel rigidly by the initial @p gap. */
+    void
+    drop_wheel(const double gap);
+    /** u += s (u - u_before) where s > 0; u_before = the old u. */
+    void
+    extrapolate(const double s, VectorType &u_before);
+    /** The errors of the load iterations: no contact found ... */
+    ExcMessage
+    no_contact_message(const double d1, const double gap, const unsigned int max_closing) const;
+    /** ... or the load not reached. */
+    ExcMessage
+    load_message(const double       target,
+                 const double       F0,
+                 const double       F1,
+                 const double       d1,
+                 const double       gap,
+                 const unsigned int max_load) const;
 
     /** The six rigid-body modes (translations, rotations about the
      *  coordinate axes) on the locally owned rows of @p matrix, for the

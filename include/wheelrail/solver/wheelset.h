@@ -11,19 +11,12 @@
 
 #include <wheelrail/base/checkpoint.h>
 #include <wheelrail/parameters/parameters.h>
+#include <wheelrail/solver/rotation.h>
 
 #include <cmath>
 
 namespace WheelRail
 {
-  /** @p r rotated about +y by the angle whose cosine and sine are @p c
-   *  and @p s (computed once for many vectors). */
-  inline Tensor<1, dim>
-  rotate_about_y(const Tensor<1, dim> &r, const double c, const double s)
-  {
-    return Tensor<1, dim>({c * r[0] + s * r[2], r[1], -s * r[0] + c * r[2]});
-  }
-
   /**
    * Rigid-body state of the axle (translation in x and z, rotation about y;
    * y is fixed) and of the sprung mass (vertical; horizontally it moves with
