@@ -28,13 +28,13 @@ namespace WheelRail
     : prm(contact)
     , mpi_communicator(comm)
     , bulk_modulus(material.lambda() + 2. / 3. * material.mu())
-    , area_penalty(contact.penalty_stiffness == "area")
+    , area_penalty(contact.penalty_stiffness == PenaltyStiffness::area)
   {
     if (prm.law)
       {
         law = prm.law;
         FrictionModel::Options options;
-        options.irreversible_slip_rate = prm.slip_rate == "irreversible";
+        options.irreversible_slip_rate = prm.slip_rate == SlipRate::irreversible;
         options.relaxation_length      = prm.relaxation_length;
         options.relaxation_time        = prm.relaxation_time;
         options.damping_ratio          = prm.tangential_damping;

@@ -116,7 +116,7 @@ namespace WheelRail
       prescribed_velocity_ids.push_back(id);
     prescribed_velocity_expression = prm.get("Prescribed velocity");
     prescribed_velocity_constants  = prm.get("Prescribed velocity constants");
-    wheel_bore                     = prm.get("Wheel bore");
+    wheel_bore                     = wheel_bore_names.parse(prm.get("Wheel bore"));
     applied_force_ids.clear();
     for (const int id : Utilities::string_to_int(
            Utilities::split_string_list(prm.get("Applied force boundaries"))))

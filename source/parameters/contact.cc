@@ -169,7 +169,7 @@ namespace WheelRail
     master_boundary           = prm.get_integer("Master boundary");
     two_pass                  = prm.get_bool("Two pass");
     penalty_scale             = prm.get_double("Penalty scale factor");
-    penalty_stiffness         = prm.get("Penalty stiffness");
+    penalty_stiffness         = penalty_stiffness_names.parse(prm.get("Penalty stiffness"));
     penalty_reference_length  = prm.get_double("Penalty reference length");
     tangential_factor         = prm.get_double("Tangential stiffness factor");
     damping_ratio             = prm.get_double("Contact damping");
@@ -179,7 +179,7 @@ namespace WheelRail
     initial_overlap_tolerance = prm.get_double("Initial overlap tolerance");
     friction_law              = prm.get("Friction law");
     law                       = FrictionLaw::create(prm);
-    slip_rate                 = prm.get("Slip rate");
+    slip_rate                 = slip_rate_names.parse(prm.get("Slip rate"));
     relaxation_length         = prm.get_double("Friction relaxation length");
     relaxation_time           = prm.get_double("Friction relaxation time");
     tangential_damping        = prm.get_double("Tangential damping");

@@ -98,8 +98,8 @@ namespace WheelRail
       void
       check_axle_load(const Parameters &p)
       {
-        const bool explicit_run = p.problem.mode == "explicit dynamics";
-        const bool rigid_axle   = p.boundary.wheel_bore == "rigid axle";
+        const bool explicit_run = p.problem.mode == RunMode::explicit_dynamics;
+        const bool rigid_axle   = p.boundary.wheel_bore == WheelBore::rigid_axle;
         // the wheel load: the masses' weight on the rigid axle, Axle load in
         // the static contact solve; the Axle load must not be given where
         // the weight replaces it
@@ -134,15 +134,15 @@ namespace WheelRail
       check_rail_length(const Parameters &p)
       {
         const GeometryParameters &g            = p.geometry;
-        const bool                explicit_run = p.problem.mode == "explicit dynamics";
-        const bool                rigid_axle   = p.boundary.wheel_bore == "rigid axle";
+        const bool                explicit_run = p.problem.mode == RunMode::explicit_dynamics;
+        const bool                rigid_axle   = p.boundary.wheel_bore == WheelBore::rigid_axle;
         const double              weight       = wheelset_weight(p);
         const std::string         rail         = rail_name(g);
         // the contact patch on the rail with as much rail again beyond it
         // (the free end is soft), from Centre x to where the wheel has
         // rolled at End time
         double load = 0;
-        if (p.problem.mode == "static contact")
+        if (p.problem.mode == RunMode::static_contact)
           load = p.statics.axle_load;
         else if (rigid_axle)
           load = weight;

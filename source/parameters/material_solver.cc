@@ -150,7 +150,7 @@ namespace WheelRail
     allow_long_runs               = prm.get_bool("Allow long runs");
     courant_factor                = prm.get_double("Courant factor");
     hourglass_coefficient         = prm.get_double("Hourglass coefficient");
-    damping_model                 = prm.get("Damping model");
+    damping_model                 = damping_model_names.parse(prm.get("Damping model"));
     stiffness_damping_coefficient = prm.get_double("Stiffness damping coefficient");
     rayleigh_beta                 = prm.get_double("Rayleigh beta");
     gravity                       = get_vector(prm, "Gravity");

@@ -171,7 +171,7 @@ namespace WheelRail
     report_interval       = prm.get_integer("Report interval");
     statistics_interval   = prm.get_integer("Statistics interval");
     vtu_interval          = prm.get_integer("VTU interval");
-    vtu_compression       = prm.get("VTU compression");
+    vtu_compression       = vtu_compression_names.parse(prm.get("VTU compression"));
     patch_window          = prm.get_double("Patch averaging window");
     patch_series_interval = prm.get_integer("Patch series interval");
     patch_series_tread    = prm.get_bool("Patch series tread");
@@ -304,7 +304,7 @@ namespace WheelRail
     hourglass_limit     = prm.get_double("Hourglass limit");
     bar_clamped         = prm.get_bool("Clamped");
     round_off_sensitive = prm.get_bool("Round-off sensitive");
-    expected_verdict    = prm.get("Expected verdict");
+    expect_failure      = prm.get("Expected verdict") == "no";
     prm.leave_subsection();
   }
 } // namespace WheelRail

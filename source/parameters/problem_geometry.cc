@@ -77,7 +77,7 @@ namespace WheelRail
   {
     prm.enter_subsection("Problem");
     geometry         = prm.get("Geometry");
-    mode             = prm.get("Mode");
+    mode             = run_mode_names.parse(prm.get("Mode"));
     output_directory = prm.get("Output directory");
     test_mode        = prm.get_bool("Test mode");
     dry_run          = prm.get_bool("Dry run");

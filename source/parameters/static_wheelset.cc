@@ -87,7 +87,7 @@ namespace WheelRail
     max_newton_iterations = prm.get_integer("Max Newton iterations");
     linear_tolerance      = prm.get_double("Linear solver tolerance");
     inexact_newton        = prm.get_bool("Inexact Newton");
-    amg_null_space        = prm.get("AMG near null space");
+    amg_null_space        = amg_null_space_names.parse(prm.get("AMG near null space"));
     prm.leave_subsection();
   }
 

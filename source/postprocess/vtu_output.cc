@@ -8,12 +8,12 @@
 namespace WheelRail
 {
   DataOutBase::VtkFlags::ZlibCompressionLevel
-  vtu_compression_level(const std::string &setting)
+  vtu_compression_level(const VtuCompression setting)
   {
     // smaller files for more time
-    return setting == "best" ? DataOutBase::VtkFlags::best_compression :
-           setting == "none" ? DataOutBase::VtkFlags::no_compression :
-                               DataOutBase::VtkFlags::best_speed;
+    return setting == VtuCompression::best ? DataOutBase::VtkFlags::best_compression :
+           setting == VtuCompression::none ? DataOutBase::VtkFlags::no_compression :
+                                             DataOutBase::VtkFlags::best_speed;
   }
 
 

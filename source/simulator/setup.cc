@@ -143,7 +143,7 @@ namespace WheelRail
   Simulator::run()
   {
     pcout << "wheelrail: geometry '" << parameters.problem.geometry << "', mode '"
-          << parameters.problem.mode << "'";
+          << run_mode_names(parameters.problem.mode) << "'";
     if (!parameters.problem.test_mode)
       pcout << ", " << Utilities::MPI::n_mpi_processes(mpi_communicator) << " MPI rank(s)";
     pcout << std::endl;
@@ -162,7 +162,7 @@ namespace WheelRail
         contact->setup(solver->get_dof_handler(), solver->partitioner(), solver->point_mass());
         solver->attach_contact(contact.get());
       }
-    if (geometry.has_wheel() && parameters.boundary.wheel_bore == "rigid axle")
+    if (geometry.has_wheel() && parameters.boundary.wheel_bore == WheelBore::rigid_axle)
       {
         wheelset = std::make_unique<Wheelset>(parameters.wheelset,
                                               parameters.solver,
@@ -183,13 +183,13 @@ namespace WheelRail
                                                                wheelset.get()});
 
     choose_time_step();
-    if (parameters.problem.mode == "explicit dynamics")
+    if (parameters.problem.mode == RunMode::explicit_dynamics)
       check_run_length();
 
     // a resumed run reads its checkpoint here, so that a checkpoint refused
     // for any reason (another rank count, a mesh or state that does not
     // fit) stops the run before it has written anything
-    const bool explicit_run = parameters.problem.mode == "explicit dynamics";
+    const bool explicit_run = parameters.problem.mode == RunMode::explicit_dynamics;
     if (parameters.output.resume && explicit_run && !parameters.problem.dry_run)
       {
         setup_postprocessors();
@@ -211,7 +211,7 @@ namespace WheelRail
       }
     if (explicit_run)
       run_explicit();
-    else if (parameters.problem.mode == "static contact")
+    else if (parameters.problem.mode == RunMode::static_contact)
       run_static_contact();
     else
       run_static_check();
@@ -353,7 +353,7 @@ namespace WheelRail
           << "  Courant number c dt / L_e    : " << fmt(c * dt / q.min_length, 4) << std::endl
           << "  hourglass coefficient QM     : " << fmt(parameters.solver.hourglass_coefficient)
           << std::endl
-          << "  damping                      : " << parameters.solver.damping_model;
+          << "  damping                      : " << damping_model_names(parameters.solver.damping_model);
     if (solver->damping_model() == DampingModel::stiffness)
       pcout << " (COEF " << fmt(parameters.solver.stiffness_damping_coefficient) << ")";
     else if (solver->damping_model() == DampingModel::rayleigh)
@@ -363,7 +363,7 @@ namespace WheelRail
       pcout << "  element geometry             : single precision (force loop)" << std::endl;
     if (contact)
       print_contact_summary();
-    if (parameters.problem.mode == "explicit dynamics")
+    if (parameters.problem.mode == RunMode::explicit_dynamics)
       pcout << "  steps                        : "
             << static_cast<unsigned long>(std::ceil(parameters.solver.end_time / dt - 1e-9))
             << " to t = " << fmt(parameters.solver.end_time * 1e3) << " ms" << std::endl;
@@ -380,16 +380,16 @@ namespace WheelRail
           << " nodes), master boundary " << cp.master_boundary
           << (cp.two_pass ? ", two-pass" : ", one-pass") << std::endl
           << "  penalty scale factor SF    : " << fmt(cp.penalty_scale) << std::endl;
-    if (cp.penalty_stiffness == "area")
+    if (cp.penalty_stiffness == PenaltyStiffness::area)
       pcout << "  penalty stiffness          : k = SF K min(A, A_s) / h_ref, h_ref = "
             << fmt(contact->penalty_reference_length() * 1e3, 4) << " mm" << std::endl;
     pcout << "  friction law               : " << cp.friction_law;
     if (const auto law = contact->friction_law())
       pcout << " (" << law->describe([](const double x) { return fmt(x); }) << ")";
     pcout << std::endl;
-    if (contact->friction_law() && (cp.slip_rate != "total" || cp.relaxation_length > 0 ||
+    if (contact->friction_law() && (cp.slip_rate != SlipRate::total || cp.relaxation_length > 0 ||
                                     cp.relaxation_time > 0 || cp.tangential_damping > 0))
-      pcout << "  friction regularisation    : slip rate " << cp.slip_rate
+      pcout << "  friction regularisation    : slip rate " << slip_rate_names(cp.slip_rate)
             << ", relaxation L = " << fmt(cp.relaxation_length * 1e6)
             << " um, tau = " << fmt(cp.relaxation_time * 1e6) << " us, tangential damping "
             << fmt(cp.tangential_damping) << std::endl;

@@ -121,7 +121,7 @@ namespace WheelRail
     const double                  E  = parameters.material.youngs_modulus;
     VectorType                    force;
 
-    if (parameters.problem.mode == "patch test")
+    if (parameters.problem.mode == RunMode::patch_test)
       {
         run_patch_test();
         return;

@@ -65,7 +65,7 @@ namespace WheelRail
         dofs[i + d] = PrescribedDof{i + d, d, kind};
     };
 
-    const std::string bore = prm.boundary.wheel_bore;
+    const WheelBore bore = prm.boundary.wheel_bore;
     bore_dofs.clear();
     std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -94,11 +94,11 @@ namespace WheelRail
                     {
                       for (unsigned int d = 0; d < dim; ++d)
                         {
-                          if (bore == "fixed")
+                          if (bore == WheelBore::fixed)
                             add(i, d, BoundaryKind::fixed);
-                          else if (bore == "spinning axle")
+                          else if (bore == WheelBore::spinning_axle)
                             add(i, d, BoundaryKind::spinning_axle);
-                          else if (bore == "rigid axle")
+                          else if (bore == WheelBore::rigid_axle)
                             add(i, d, BoundaryKind::rigid_axle);
                           if (i + d < vector_partitioner->locally_owned_size())
                             bore_dofs.push_back(i + d);

@@ -45,12 +45,7 @@ namespace WheelRail
     make_hanging_vertices_conforming();
     setup_partitioner();
 
-    if (prm.solver.damping_model == "stiffness")
-      damping = DampingModel::stiffness;
-    else if (prm.solver.damping_model == "Rayleigh")
-      damping = DampingModel::rayleigh;
-    else
-      damping = DampingModel::none;
+    damping = prm.solver.damping_model;
     setup_node_data();
     setup_cell_data();
     find_families();

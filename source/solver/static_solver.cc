@@ -126,7 +126,7 @@ namespace WheelRail
     // Chebyshev of degree 1: more CG iterations than degree 2 but fewer
     // products with K in all (doc/notes/performance_update.md)
     amg_data.smoother_sweeps = 1;
-    if (parameters.statics.amg_null_space == "translations")
+    if (parameters.statics.amg_null_space == AmgNullSpace::translations)
       {
         amg_data.aggregation_threshold = 0.02;
         std::vector<std::vector<bool>> modes;

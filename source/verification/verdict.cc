@@ -45,7 +45,7 @@ namespace WheelRail
       if (!parameters.problem.test_mode)
         return;
       const unsigned int n           = dealii::Utilities::MPI::max(failed, comm);
-      const bool         expect_fail = parameters.verification.expected_verdict == "no";
+      const bool         expect_fail = parameters.verification.expect_failure;
       AssertThrow(n == 0 || expect_fail,
                   dealii::ExcMessage(
                     "Test mode: " + std::to_string(n) +

@@ -16,6 +16,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <wheelrail/parameters/selection.h>
 #include <wheelrail/postprocess/registry.h>
 
 #include <map>
@@ -30,6 +31,73 @@ namespace WheelRail
   /** Space dimension: wheelrail is a 3D program only. */
   constexpr unsigned int dim = 3;
 
+  /** Time integration/Damping model: the stiffness-proportional damping
+   *  coefficient beta_e of each cell (SPEC 2). */
+  enum class DampingModel
+  {
+    none,
+    stiffness, ///< beta_e = 2 COEF / omega_e, omega_e = 2 c / L_e
+    rayleigh   ///< beta_e = Rayleigh beta for every cell
+  };
+  inline constexpr SelectionNames<DampingModel, 3> damping_model_names{
+    {"none", "stiffness", "Rayleigh"}};
+
+  /** Problem/Mode: the explicit run or one of the static runs. */
+  enum class RunMode
+  {
+    explicit_dynamics,
+    static_contact,
+    patch_test,
+    rigid_rotation
+  };
+  inline constexpr SelectionNames<RunMode, 4> run_mode_names{
+    {"explicit dynamics", "static contact", "patch test", "rigid rotation"}};
+
+  /** Boundary conditions/Wheel bore: the motion of the bore nodes. */
+  enum class WheelBore
+  {
+    free,
+    fixed,
+    spinning_axle,
+    rigid_axle
+  };
+  inline constexpr SelectionNames<WheelBore, 4> wheel_bore_names{
+    {"free", "fixed", "spinning axle", "rigid axle"}};
+
+  /** Contact/Penalty stiffness. */
+  enum class PenaltyStiffness
+  {
+    segment,
+    area
+  };
+  inline constexpr SelectionNames<PenaltyStiffness, 2> penalty_stiffness_names{{"segment", "area"}};
+
+  /** Contact/Slip rate: what the friction law is evaluated at. */
+  enum class SlipRate
+  {
+    total,
+    irreversible
+  };
+  inline constexpr SelectionNames<SlipRate, 2> slip_rate_names{{"total", "irreversible"}};
+
+  /** Static solve/AMG near null space. */
+  enum class AmgNullSpace
+  {
+    translations,
+    rigid_body_modes
+  };
+  inline constexpr SelectionNames<AmgNullSpace, 2> amg_null_space_names{
+    {"translations", "rigid body modes"}};
+
+  /** Output/VTU compression. */
+  enum class VtuCompression
+  {
+    fast,
+    best,
+    none
+  };
+  inline constexpr SelectionNames<VtuCompression, 3> vtu_compression_names{{"fast", "best", "none"}};
+
   /** What is computed and where it goes ("subsection Problem"). */
   struct ProblemParameters
   {
@@ -37,8 +105,8 @@ namespace WheelRail
      *  "bar" or "block on plate" (verification bodies); the names are
      *  GeometryModel::names(). */
     std::string geometry;
-    /** "explicit dynamics" or one of the static verification modes. */
-    std::string mode;
+    /** The explicit run or one of the static verification modes. */
+    RunMode mode;
     std::string output_directory;
     /** Reproducible screen output for the test suite: no timings, no paths. */
     bool test_mode;
@@ -145,7 +213,7 @@ namespace WheelRail
     bool         allow_long_runs; ///< confirms > 1e8 steps or a step < 1e-3 of the stable one
     double       courant_factor;
     double       hourglass_coefficient;
-    std::string  damping_model; ///< "none", "stiffness", "Rayleigh"
+    DampingModel damping_model;
     double       stiffness_damping_coefficient;
     double       rayleigh_beta;
     Tensor<1, 3> gravity;
@@ -170,8 +238,8 @@ namespace WheelRail
     /** Expression of the prescribed velocity, "vx; vy; vz" in (x,y,z,t). */
     std::string prescribed_velocity_expression;
     std::string prescribed_velocity_constants;
-    /** "free", "fixed" or "spinning axle" for the wheel bore. */
-    std::string wheel_bore;
+    /** The motion of the wheel bore. */
+    WheelBore wheel_bore;
     /** Boundary ids loaded by the applied force (empty = none). */
     std::vector<types::boundary_id> applied_force_ids;
     /** Total force "Fx; Fy; Fz" [N] as functions of t, spread by area. */
@@ -194,7 +262,7 @@ namespace WheelRail
     types::boundary_id master_boundary;
     bool               two_pass;
     double             penalty_scale;
-    std::string        penalty_stiffness;        ///< "segment" or "area"
+    PenaltyStiffness   penalty_stiffness;
     double             penalty_reference_length; ///< h_ref of "area" [m], 0: finest master cell
     double             tangential_factor;
     double             damping_ratio;
@@ -206,7 +274,7 @@ namespace WheelRail
     /** The law with its coefficients (FrictionLaw::create()), null for
      *  "none". */
     std::shared_ptr<const FrictionLaw> law;
-    std::string        slip_rate;          ///< "total" (paper) or "irreversible"
+    SlipRate           slip_rate;          ///< total (paper) or irreversible
     double             relaxation_length;  ///< L of the friction state [m], 0: off
     double             relaxation_time;    ///< tau of the friction state [s], 0: off
     double             tangential_damping; ///< fraction of critical on k_t [-]
@@ -259,7 +327,7 @@ namespace WheelRail
     unsigned int max_newton_iterations;
     double       linear_tolerance;
     bool         inexact_newton; ///< CG tolerance from the Newton residual
-    std::string  amg_null_space; ///< "translations" or "rigid body modes"
+    AmgNullSpace amg_null_space;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -287,7 +355,7 @@ namespace WheelRail
     unsigned int  report_interval;
     unsigned int  statistics_interval;
     unsigned int  vtu_interval;
-    std::string   vtu_compression;       ///< "fast", "best" or "none"
+    VtuCompression vtu_compression;
     double        patch_window;          ///< window of the patch means [s], 0 = none
     unsigned int  patch_series_interval; ///< steps between patch-series frames, 0 = none
     bool          patch_series_tread;    ///< the series holds the tread's frames too
@@ -325,7 +393,7 @@ namespace WheelRail
     double       hourglass_limit;
     bool         round_off_sensitive; ///< test mode prints robust values only
     bool         bar_clamped;
-    std::string  expected_verdict; ///< "yes", or "no" for a test of a failing check
+    bool         expect_failure; ///< Expected verdict = no: a test of a failing check
 
     static void
     declare_parameters(ParameterHandler &prm);

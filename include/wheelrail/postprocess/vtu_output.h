@@ -19,7 +19,7 @@ namespace WheelRail
 {
   /** zlib level of Output/VTU compression ('fast', 'best', 'none'). */
   DataOutBase::VtkFlags::ZlibCompressionLevel
-  vtu_compression_level(const std::string &setting);
+  vtu_compression_level(const VtuCompression setting);
 
   class VtuOutput : public SerializedPostprocessor<VtuOutput>
   {

@@ -69,13 +69,6 @@ namespace WheelRail
   } // namespace ElementKernel
 
   /** Time Integration/Damping model, decided once at setup. */
-  enum class DampingModel
-  {
-    none,
-    stiffness, ///< beta_e = 2 COEF / omega_e, omega_e = 2 c / L_e
-    rayleigh   ///< beta_e = Rayleigh beta for every cell
-  };
-
   /**
    * The elastic operator on a distributed mesh of trilinear hexahedra.
    * Vectors are LinearAlgebra::distributed::Vector on partitioner(): the
