@@ -40,7 +40,7 @@ namespace WheelRail
     rayleigh   ///< beta_e = Rayleigh beta for every cell
   };
   inline constexpr SelectionNames<DampingModel, 3> damping_model_names{
-    {"none", "stiffness", "Rayleigh"}};
+    {{"none", "stiffness", "Rayleigh"}}};
 
   /** Problem/Mode: the explicit run or one of the static runs. */
   enum class RunMode
@@ -51,7 +51,7 @@ namespace WheelRail
     rigid_rotation
   };
   inline constexpr SelectionNames<RunMode, 4> run_mode_names{
-    {"explicit dynamics", "static contact", "patch test", "rigid rotation"}};
+    {{"explicit dynamics", "static contact", "patch test", "rigid rotation"}}};
 
   /** Boundary conditions/Wheel bore: the motion of the bore nodes. */
   enum class WheelBore
@@ -62,7 +62,7 @@ namespace WheelRail
     rigid_axle
   };
   inline constexpr SelectionNames<WheelBore, 4> wheel_bore_names{
-    {"free", "fixed", "spinning axle", "rigid axle"}};
+    {{"free", "fixed", "spinning axle", "rigid axle"}}};
 
   /** Contact/Penalty stiffness. */
   enum class PenaltyStiffness
@@ -70,7 +70,8 @@ namespace WheelRail
     segment,
     area
   };
-  inline constexpr SelectionNames<PenaltyStiffness, 2> penalty_stiffness_names{{"segment", "area"}};
+  inline constexpr SelectionNames<PenaltyStiffness, 2> penalty_stiffness_names{
+    {{"segment", "area"}}};
 
   /** Contact/Slip rate: what the friction law is evaluated at. */
   enum class SlipRate
@@ -78,7 +79,7 @@ namespace WheelRail
     total,
     irreversible
   };
-  inline constexpr SelectionNames<SlipRate, 2> slip_rate_names{{"total", "irreversible"}};
+  inline constexpr SelectionNames<SlipRate, 2> slip_rate_names{{{"total", "irreversible"}}};
 
   /** Static solve/AMG near null space. */
   enum class AmgNullSpace
@@ -87,7 +88,7 @@ namespace WheelRail
     rigid_body_modes
   };
   inline constexpr SelectionNames<AmgNullSpace, 2> amg_null_space_names{
-    {"translations", "rigid body modes"}};
+    {{"translations", "rigid body modes"}}};
 
   /** Output/VTU compression. */
   enum class VtuCompression
@@ -96,7 +97,8 @@ namespace WheelRail
     best,
     none
   };
-  inline constexpr SelectionNames<VtuCompression, 3> vtu_compression_names{{"fast", "best", "none"}};
+  inline constexpr SelectionNames<VtuCompression, 3> vtu_compression_names{
+    {{"fast", "best", "none"}}};
 
   /** What is computed and where it goes ("subsection Problem"). */
   struct ProblemParameters
@@ -106,7 +108,7 @@ namespace WheelRail
      *  GeometryModel::names(). */
     std::string geometry;
     /** The explicit run or one of the static verification modes. */
-    RunMode mode;
+    RunMode     mode;
     std::string output_directory;
     /** Reproducible screen output for the test suite: no timings, no paths. */
     bool test_mode;
@@ -270,14 +272,14 @@ namespace WheelRail
     double             search_margin;
     double             rebuild_fraction;
     double             initial_overlap_tolerance; ///< [m], see check_initial_overlap()
-    std::string        friction_law; ///< its name, "none" for no friction
+    std::string        friction_law;              ///< its name, "none" for no friction
     /** The law with its coefficients (FrictionLaw::create()), null for
      *  "none". */
     std::shared_ptr<const FrictionLaw> law;
-    SlipRate           slip_rate;          ///< total (paper) or irreversible
-    double             relaxation_length;  ///< L of the friction state [m], 0: off
-    double             relaxation_time;    ///< tau of the friction state [s], 0: off
-    double             tangential_damping; ///< fraction of critical on k_t [-]
+    SlipRate                           slip_rate;         ///< total (paper) or irreversible
+    double                             relaxation_length; ///< L of the friction state [m], 0: off
+    double                             relaxation_time;   ///< tau of the friction state [s], 0: off
+    double                             tangential_damping; ///< fraction of critical on k_t [-]
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -352,21 +354,21 @@ namespace WheelRail
   /** Screen reports, statistics file, VTU snapshots, probes. */
   struct OutputParameters
   {
-    unsigned int  report_interval;
-    unsigned int  statistics_interval;
-    unsigned int  vtu_interval;
+    unsigned int   report_interval;
+    unsigned int   statistics_interval;
+    unsigned int   vtu_interval;
     VtuCompression vtu_compression;
-    double        patch_window;          ///< window of the patch means [s], 0 = none
-    unsigned int  patch_series_interval; ///< steps between patch-series frames, 0 = none
-    bool          patch_series_tread;    ///< the series holds the tread's frames too
-    Point<3>      probe_point;
-    unsigned int  probe_component;
-    unsigned int  timing_warmup_steps;
-    double        divergence_limit;    ///< largest relative energy balance error
-    unsigned int  checkpoint_interval; ///< steps between checkpoints, 0 = none
-    double        checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
-    unsigned long stop_after_step;     ///< stop (with a checkpoint) after this step, 0 = never
-    bool          resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
+    double         patch_window;          ///< window of the patch means [s], 0 = none
+    unsigned int   patch_series_interval; ///< steps between patch-series frames, 0 = none
+    bool           patch_series_tread;    ///< the series holds the tread's frames too
+    Point<3>       probe_point;
+    unsigned int   probe_component;
+    unsigned int   timing_warmup_steps;
+    double         divergence_limit;    ///< largest relative energy balance error
+    unsigned int   checkpoint_interval; ///< steps between checkpoints, 0 = none
+    double         checkpoint_minutes;  ///< wall minutes between checkpoints, 0 = none
+    unsigned long  stop_after_step;     ///< stop (with a checkpoint) after this step, 0 = never
+    bool           resume = false;      ///< continue from OUTDIR/checkpoint (--resume)
     /** Output/Postprocessors: the selected ones, each by name with its
      *  parsed parameters (postprocess/registry.h). */
     std::vector<std::pair<std::string, PostprocessorFactory>> postprocessors;
