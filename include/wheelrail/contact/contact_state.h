@@ -19,6 +19,7 @@
 #include <wheelrail/parameters/parameters.h>
 
 #include <limits>
+#include <vector>
 
 namespace WheelRail
 {
@@ -164,6 +165,16 @@ namespace WheelRail
     double slaves    = 0; ///< closest points, penalty and friction of this rank's block
     double exchange  = 0; ///< the blocks' states to every rank
     double forces    = 0; ///< totals, pairs and the nodal forces
+  };
+
+  /** What PenaltyContact::gather_positions() sends and receives for a set
+   *  of contact nodes: fixed from one search to the next. */
+  struct GatherPlan
+  {
+    std::vector<unsigned int> local_dof;      ///< this rank's nodes: first local DoF, ascending
+    std::vector<Point<dim>>   X;              ///< their reference positions
+    std::vector<unsigned int> nodes;          ///< all ranks' nodes in the order they arrive
+    std::vector<int>          counts, displs; ///< per rank, in doubles
   };
 } // namespace WheelRail
 

@@ -421,15 +421,6 @@ namespace WheelRail
     /** candidate_block() of this rank. */
     std::pair<unsigned int, unsigned int>
     own_candidates(const unsigned int n) const;
-    /** What gather_positions() sends and receives for a set of nodes:
-     *  fixed from one search to the next. */
-    struct GatherPlan
-    {
-      std::vector<unsigned int> local_dof;      ///< this rank's nodes: first local DoF, ascending
-      std::vector<Point<dim>>   X;              ///< their reference positions
-      std::vector<unsigned int> nodes;          ///< all ranks' nodes in the order they arrive
-      std::vector<int>          counts, displs; ///< per rank, in doubles
-    };
     void
     plan_gather(const std::vector<unsigned int> &nodes, GatherPlan &plan);
     /** node_x = X + u of the plan's nodes on every rank. */
