@@ -48,7 +48,10 @@ namespace WheelRail
   bool
   FrictionLaw::register_law(const Plugin &plugin)
   {
-    AssertThrow(registry().emplace(plugin.name, plugin).second && plugin.name != std::string("none"),
+    AssertThrow(plugin.name != std::string("none"),
+                dealii::ExcMessage("A friction law cannot be named 'none': Contact/Friction law = "
+                                   "none is no friction."));
+    AssertThrow(registry().emplace(plugin.name, plugin).second,
                 dealii::ExcMessage("A second friction law named '" + std::string(plugin.name) +
                                    "' was registered."));
     return true;
