@@ -19,6 +19,8 @@ figures and report pages, the sweeps and studies. One module per job:
     layout_report      C++ files and their largest functions (scripts/layout_report.py)
     standard_profiles  S1002, 60E1 and the paper's pair as files in mesh/profiles/
                        from their definitions, and their checks (scripts/make_profiles.py)
+    profiles           profile files, rail inclination, wheelset shift, the rigid
+                       contact points and the gap (scripts/profile_contact.py)
 
 The command-line entry points are the few-line files beside this folder in
 scripts/; Python puts a script's own directory first on sys.path, so they find
