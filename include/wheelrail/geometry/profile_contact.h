@@ -69,6 +69,8 @@ namespace WheelRail
      * near equal slopes (every minimum) they differ by the factor cos(delta)
      * to first order, which normal_separation gives exactly; on a steep flange
      * the vertical search still finds the points where the slopes are equal.
+     * Where d is constant (flat on flat, a line contact) the one point returned
+     * is the right end of the common range, marked at_range_end.
      */
     std::vector<ProfileContactPoint>
     rigid_contact(const ProfileCurve &wheel,
