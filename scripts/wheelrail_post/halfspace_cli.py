@@ -75,7 +75,9 @@ def run(args):
             elliptic_case(args.nx, args.ny, args.margin, args.load, args.rx, args.ry, args.E,
                           args.nu)
         grid, p, normal, hz, X, Y, _ = case
-        a_p, b_p = semi_axes(grid, p, X, Y)
+        # a gap's patch need not be centred: its second moments about the centroid
+        xc, yc = ((p * X).sum() / p.sum(), (p * Y).sum() / p.sum()) if args.gap else (0.0, 0.0)
+        a_p, b_p = semi_axes(grid, p, X - xc, Y - yc) if args.gap else semi_axes(grid, p, X, Y)
     fy = None if args.fy is None else args.fy * p.sum() * grid.dA
     sol = rolling(grid, p, law, args.speed, creep=args.creepage, fx=args.fx, eta=args.eta,
                   phi=args.phi, fy=fy)

@@ -4,7 +4,8 @@ contact for elliptic patches, and their interpolation in a/b and nu.
 The table is Kalker's (J. J. Kalker, Three-dimensional elastic bodies in
 rolling contact, Kluwer 1990, Table E.3; first in his 1967 thesis, also in
 Johnson, Contact Mechanics, Table 8.1), as CONTACT carries it (Vtech CMCC,
-E. A. H. Vollebregt, module m_hertz, subroutine linrol): for g = a/b <= 1
+E. A. H. Vollebregt; github eve70a/CONTACT, src/m_hertz.f90, subroutine
+linrol, Apache 2.0; the numbers only): for g = a/b <= 1
 (a along the rolling direction) and for g = b/a <= 1, rows g = 0.1 .. 1.0,
 each coefficient at nu = 0, 0.25, 0.5. The a/b and b/a halves meet at
 a = b. Within a row pair the interpolation is linear in g, as CONTACT's.

@@ -11,10 +11,12 @@ xi = (v_x - omega r) / V and eta = v_y / V the longitudinal and lateral
 creepages (the wheel's rigid velocity relative to the rail at the reference
 point, over V; xi as bem.py and wheelrail's statistics), phi = Omega_z / V
 [1/m] the spin creepage, Omega_z the wheel's angular velocity relative to
-the rail about the normal (Omega_z . (x, y) -> (-Omega_z y, Omega_z x)).
-This is Kalker's convention (Kalker 1990, Three-dimensional elastic bodies
-in rolling contact, ch. 1; CONTACT's kinematic constants cksi, ceta, cphi)
-and SPEC 10's (phi = Omega . n / V). The slip velocity is
+the rail about the normal (the rotation moves the point (x, y) at
+(-Omega_z y, Omega_z x)). This is Kalker's convention (Kalker 1990,
+Three-dimensional elastic bodies in rolling contact) as CONTACT computes it
+(github eve70a/CONTACT, src/m_sdis.f90, set_tang_rhs: the rigid slip of
+body 1 with respect to body 2 is (cksi - cphi y, ceta + cphi x)), and
+SPEC 10's (phi = Omega . n / V). The slip velocity is
 s = V (w - du/dx) as in bem.py; q, F are what the rail exerts on the wheel.
 
 Kalker's linear theory in these conventions (small creepages, no slip):

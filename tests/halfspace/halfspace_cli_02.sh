@@ -4,12 +4,13 @@
 # its M_z is the fields' sum of (x q_y - y q_x) dA; a given F_y/F_N with spin
 # is reached; a Hertzian gap as .npz and as CSV gives the same fields and
 # Hertz's p0, a, b; bad input ends with exit status 2, a message naming the
-# option and no output directory.
+# option and no output directory. The same gap 2 mm aside keeps its a, b
+# and puts its pressure centroid at y = 2 mm.
 # Argument: the source directory.
 set -euo pipefail
 src=$1
 hs="/usr/bin/python3 $src/scripts/halfspace.py"
-rm -rf spin force gap_npz gap_csv bad hz.npz hz.csv nokey.npz
+rm -rf spin force gap_npz gap_csv gap_shift bad hz.npz hz.csv shift.npz nokey.npz
 $hs --nx 16 --ny 17 --creepage -0.001 --phi 0.5 --out spin
 $hs --nx 16 --ny 17 --fy 0.2 --phi 0.5 --out force
 /usr/bin/python3 - <<'PY'
@@ -20,6 +21,7 @@ X, S = np.meshgrid(x, s, indexing="ij")
 h = X * X / (2 * 0.46) + S * S / (2 * 0.30)  # the SPEC 8 gap, R_x 0.46 m, R_y 0.30 m
 np.savez("hz.npz", x=x, s=s, h=h)
 np.savez("nokey.npz", x=x, y=s, h=h)
+np.savez("shift.npz", x=x, s=s, h=X * X / (2 * 0.46) + (S - 2e-3) ** 2 / (2 * 0.30))
 with open("hz.csv", "w") as out:
     out.write("x,s,h\n")
     for i in range(x.size):
@@ -29,6 +31,7 @@ PY
 $hs --nx 24 --ny 25 --gap hz.npz --creepage -0.001 --out gap_npz
 $hs --nx 24 --ny 25 --gap hz.csv --creepage -0.001 --out gap_csv
 cmp gap_npz/fields.csv gap_csv/fields.csv
+$hs --nx 24 --ny 25 --gap shift.npz --out gap_shift
 /usr/bin/python3 - <<'PY'
 import csv
 import numpy as np
@@ -49,6 +52,11 @@ g = totals("gap_npz")
 assert abs(g["p0"] / 1385.43e6 - 1) < 3e-3 and abs(g["a"] / 8.0174e-3 - 1) < 3e-3, g
 assert abs(g["b"] / 6.0309e-3 - 1) < 3e-3 and abs(g["approach"] / 130.487e-6 - 1) < 3e-3, g
 assert abs(g["F_y"]) < 1e-6 * g["F_N"] and abs(g["M_z"]) < 1e-9 * g["F_N"], g
+sh = totals("gap_shift")  # the same patch 2 mm aside: a, b about its centroid
+assert abs(sh["a"] / 8.0174e-3 - 1) < 3e-3 and abs(sh["b"] / 6.0309e-3 - 1) < 3e-3, sh
+rows = list(csv.DictReader(open("gap_shift/fields.csv")))
+p, y = (np.array([float(r[k]) for r in rows]) for k in ("p", "y"))
+assert abs((p * y).sum() / p.sum() - 2e-3) < 2e-5, (p * y).sum() / p.sum()
 print("spin: M_z %.3f N m = sum (x q_y - y q_x) dA; F_y/F_N 0.2 at eta %.5f; gap file: p0 %.1f MPa,"
       " a %.4f mm, b %.4f mm" % (t["M_z"], f["eta"], g["p0"] * 1e-6, g["a"] * 1e3, g["b"] * 1e3))
 PY
