@@ -385,14 +385,22 @@ def local_slip(w_star, a, bound, mask):
 def tang(grid, bound, creep, q, stick, tol=1e-10, maxit=300, beta=0.5):
     """Kalker's TANG for fixed traction bounds g = f p (> 0 in contact).
 
-    Stick set H: w - du/dx = 0; slip set S: q = g t, t = -W/|W|.
+    creep: the rigid slip w, nc constants (uniform) or an array (nc,) +
+    grid shape (with spin: rolling3d.rigid_slip). Stick set H:
+    w - du/dx = 0; slip set S: q = g t, t = -W/|W|.
     Returns q, W (dimensionless slip s/V), stick mask, iterations."""
     nc = grid.nc
     contact = bound > 0
-    creep = np.asarray(creep, dtype=float).reshape((nc,) + (1,) * len(grid.shape))
+    creep = np.asarray(creep, dtype=float)
     qn = np.linalg.norm(q, axis=0)
     t = np.where(qn > 0, q / np.where(qn > 0, qn, 1.0), 0.0)
-    t[0][(qn == 0) & contact] = -1.0 if creep.flat[0] > 0 else 1.0
+    if creep.size == nc:
+        creep = creep.reshape((nc,) + (1,) * len(grid.shape))
+        t[0][(qn == 0) & contact] = -1.0 if creep.flat[0] > 0 else 1.0
+    else:  # a field: the first slip directions opposite to the rigid slip
+        wn = np.linalg.norm(creep, axis=0)
+        fresh = (qn == 0) & contact & (wn > 0)
+        t[:, fresh] = -creep[:, fresh] / wn[fresh]
     a = -grid.diag.reshape((nc,) + (1,) * len(grid.shape))
     history = []  # of the slip directions while the sets stay the same
     for it in range(1, maxit + 1):

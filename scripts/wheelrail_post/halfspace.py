@@ -3,10 +3,12 @@ the cases and the solve.
 
 The Hertzian wheel-rail case of SPEC 8 on a grid of rectangles: the normal
 problem at a given load (elliptic_case, or line_case for Carter's strip), then
-steady rolling at a given creepage or longitudinal force (rolling) with
-Coulomb friction or the exponential law (make_law), the per-element fields and
-CSV files of them (write_csv).
-The numerics are in bem.py, the verification checks in halfspace_checks.py,
+steady rolling at given creepages (xi, eta, spin phi) or a given longitudinal
+or lateral force (rolling) with Coulomb friction or the exponential law
+(make_law), the per-element fields and CSV files of them (write_csv); a
+non-Hertzian case from a gap file (gap_file_case, gap.py).
+The numerics are in bem.py (spin: rolling3d.py, general gaps: gap.py), the
+verification checks in halfspace_checks.py and halfspace_checks_rolling.py,
 the command line (scripts/halfspace.py) in halfspace_cli.py. Signs and
 conventions: halfspace_cli.py's docstring, doc/manual/halfspace.md.
 """
@@ -16,6 +18,8 @@ import numpy as np
 
 from . import atomic_file
 from . import bem
+from . import gap
+from . import rolling3d
 
 SPEC = dict(load=140.3e3, rx=0.46, ry=0.30, E=2.1e11, nu=0.3, speed=38.89,
             f=0.5, f_s=0.5, f_d=0.32, k=6.0)
@@ -68,7 +72,32 @@ def semi_axes(grid, p, X, Y):
     return math.sqrt(5.0 * (p * X * X).sum() / w), math.sqrt(5.0 * (p * Y * Y).sum() / w)
 
 
-def rolling(grid, p, law, speed, creep=None, fx=None, eta=0.0):
+def gap_file_case(path, nx, ny, margin, load, E, nu):
+    """The non-Hertzian case of a gap file (gap.load_gap): the grid placed
+    over the contact (gap.gap_case), the normal solution, Hertz values NaN."""
+    try:
+        grid, p, info = gap.gap_case(gap.load_gap(path), load, nx, ny, E, nu, margin)
+    except (OSError, gap.GapError) as e:
+        raise InputError("--gap: %s" % e)
+    X, Y = np.meshgrid(grid.x, grid.y, indexing="ij")
+    nan = float("nan")
+    hz = dict(a=nan, b=nan, p0=nan, area=nan, approach=nan)
+    return grid, p, info, hz, X, Y, moduli(E, nu)[1]
+
+
+def rolling(grid, p, law, speed, creep=None, fx=None, eta=0.0, phi=0.0, fy=None):
+    """Steady rolling at the creepages, or at a given F_x or F_y [N] (one of
+    them). Without spin and F_y the solve of the earlier versions (bem.py),
+    otherwise rolling3d's (the solution then carries F_x, F_y, M_z)."""
+    if phi != 0.0 or fy is not None:
+        try:
+            if fx is not None:
+                return rolling3d.solve_force(grid, p, law, speed, fx, "xi", eta=eta, phi=phi)
+            if fy is not None:
+                return rolling3d.solve_force(grid, p, law, speed, fy, "eta", xi=creep, phi=phi)
+        except ValueError as e:
+            raise InputError("%s: %s" % ("--fy" if fy is not None else "--Fx", e))
+        return rolling3d.solve_spin(grid, p, law, speed, xi=creep, eta=eta, phi=phi)
     if fx is not None:
         try:
             return bem.solve_rolling_force(grid, p, fx, law, speed, eta=eta)

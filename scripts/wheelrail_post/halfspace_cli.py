@@ -1,26 +1,39 @@
 """Half-space reference of the wheel-rail contact patch (Kalker's exact theory).
 
-Solves the Hertzian wheel-rail case of SPEC 8 on a grid of rectangles (the
-numerics are in scripts/wheelrail_post/bem.py): the normal problem at a given load,
-then steady rolling at a given longitudinal creepage or longitudinal force,
-with Coulomb friction or the exponential law of SPEC 4, and writes
+Solves the Hertzian wheel-rail case of SPEC 8, or a non-Hertzian one from a
+gap file (--gap), on a grid of rectangles (the numerics are in
+scripts/wheelrail_post/bem.py, rolling3d.py, gap.py): the normal problem at a
+given load, then steady rolling at given creepages xi, eta, phi or at a given
+longitudinal force (--Fx) or lateral force (--fy, over F_N), with Coulomb
+friction or the exponential law of SPEC 4, and writes
 
   DIR/fields.csv      one row per element: x, y [m], p, q_x, q_y [Pa], slip
                       velocity s_x, s_y, |s| [m/s], f, state (stick, slip, out)
-  DIR/centreline.csv  the same along y = 0 (the middle row), for overlays
+  DIR/centreline.csv  the same along the middle row of elements (y = 0 in the
+                      Hertzian case), for overlays
   DIR/totals.csv      quantity, value, unit: F_N, F_x, F_y, xi, eta, slip-area
                       fraction, p0, a, b, contact area, approach, the Hertz
-                      values, iteration counts and residuals
+                      values, iteration counts and residuals; with --phi, --fy
+                      or --gap also phi, F_y/F_N and the spin moment M_z
 
 Signs: x is the rolling direction (the wheel moves towards +x, the leading edge
-is at x > 0), xi = (v_axle - omega r) / V (wheelrail's creepage); q, F_x, F_y
-are the traction and force the rail exerts on the wheel (wheelrail's F_L; a
-driving wheel has F_x > 0 and xi < 0); s is the velocity of the wheel surface
-relative to the rail surface, s = V (xi - du_x/dx) in x.
+is at x > 0), y lateral, z = x cross y the normal into the wheel;
+xi = (v_axle - omega r) / V (wheelrail's creepage), eta = v_y / V,
+phi = Omega_z / V [1/m] (Kalker's: rigid slip (xi - phi y, eta + phi x));
+q, F_x, F_y are the traction and force the rail exerts on the wheel
+(wheelrail's F_L; a driving wheel has F_x > 0 and xi < 0), M_z =
+sum (x q_y - y q_x) dA about the origin; s is the velocity of the wheel surface
+relative to the rail surface, s = V (w - du/dx).
+
+--gap FILE: h [m] on a grid, an .npz with keys x, s, h (h[i, j] at x[i] along
+the rolling direction and s[j] lateral, m; what profiles.py writes) or a CSV
+with the columns x, s, h, one row per grid point; --nx, --ny, --margin set
+the grid, which is placed over the contact automatically (gap.py).
 
 --check NAME runs a verification (fixed settings, independent of the other
 options) and exits with status 1 if it fails: hertz, carter, c11, fullslip,
-exponential, memory (the relaxing friction state) or all. See doc/manual/halfspace.md.
+exponential, memory (the relaxing friction state), c22, c23, spin_fullslip,
+symmetry, gap or all. See doc/manual/halfspace.md.
 """
 import argparse
 import math
@@ -31,9 +44,13 @@ import time
 import numpy as np
 
 from . import bem
-from .halfspace import (SPEC, InputError, elliptic_case, fields, line_case, make_law, moduli,
-                        rolling, semi_axes, write_csv)
-from .halfspace_checks import CHECKS
+from .halfspace import (SPEC, InputError, elliptic_case, fields, gap_file_case, line_case,
+                        make_law, moduli, rolling, semi_axes, write_csv)
+from .halfspace_checks import CHECKS as CHECKS_2D
+from .halfspace_checks_rolling import CHECKS as CHECKS_3D
+from .rolling3d import creep_totals
+
+CHECKS = dict(CHECKS_2D, **CHECKS_3D)
 
 
 def run(args):
@@ -53,10 +70,17 @@ def run(args):
         # <x^2>_p = a^2 / 4 for the semi-elliptic line pressure
         a_p, b_p = 2.0 * math.sqrt((p * X * X).sum() / p.sum()), float("nan")
     else:
-        grid, p, normal, hz, X, Y, _ = elliptic_case(args.nx, args.ny, args.margin, args.load,
-                                                     args.rx, args.ry, args.E, args.nu)
-        a_p, b_p = semi_axes(grid, p, X, Y)
-    sol = rolling(grid, p, law, args.speed, creep=args.creepage, fx=args.fx, eta=args.eta)
+        case = gap_file_case(args.gap, args.nx, args.ny, args.margin, args.load, args.E,
+                             args.nu) if args.gap else \
+            elliptic_case(args.nx, args.ny, args.margin, args.load, args.rx, args.ry, args.E,
+                          args.nu)
+        grid, p, normal, hz, X, Y, _ = case
+        # a gap's patch need not be centred: its second moments about the centroid
+        xc, yc = ((p * X).sum() / p.sum(), (p * Y).sum() / p.sum()) if args.gap else (0.0, 0.0)
+        a_p, b_p = semi_axes(grid, p, X - xc, Y - yc) if args.gap else semi_axes(grid, p, X, Y)
+    fy = None if args.fy is None else args.fy * p.sum() * grid.dA
+    sol = rolling(grid, p, law, args.speed, creep=args.creepage, fx=args.fx, eta=args.eta,
+                  phi=args.phi, fy=fy)
     fl = fields(grid, p, sol, args.speed)
     F = sol["q"].reshape(grid.nc, -1).sum(axis=1) * grid.dA
     contact = sol["contact"]
@@ -66,7 +90,8 @@ def run(args):
         ("F_N", p.sum() * grid.dA, unit_f), ("F_x", F[0], unit_f),
         ("F_y", F[1] if grid.nc == 2 else 0.0, unit_f),
         ("F_x/F_N", F[0] / (p.sum() * grid.dA), "-"),
-        ("xi", sol["xi"], "-"), ("eta", args.eta if grid.nc == 2 else 0.0, "-"),
+        ("xi", sol["xi"], "-"), ("eta", sol.get("eta", args.eta) if grid.nc == 2 else 0.0, "-")] + \
+        spin_rows(args, grid, sol, p) + [
         ("slip_area_fraction", (contact & ~sol["stick"]).sum() / max(n_c, 1), "-"),
         ("p0", p.max(), "Pa"), ("a", a_p, "m"), ("b", b_p, "m"),
         ("contact_area", n_c * grid.dA, "m" if args.line else "m^2"),
@@ -103,6 +128,16 @@ def run(args):
     return 0
 
 
+def spin_rows(args, grid, sol, p):
+    """Rows of totals.csv for spin, a given F_y or a gap file (only then, so
+    that the files of the other options stay as they were)."""
+    if args.phi == 0.0 and args.fy is None and not args.gap:
+        return []
+    fx, fy, mz = creep_totals(grid, sol["q"])
+    return [("phi", args.phi, "1/m"), ("F_y/F_N", fy / (p.sum() * grid.dA), "-"),
+            ("M_z", mz, "N m")]
+
+
 def parse(argv):
     ap = argparse.ArgumentParser(
         description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -115,6 +150,9 @@ def parse(argv):
                    "1.01..5 [default 1.1]")
     g.add_argument("--line", action="store_true", help="2-D plane-strain strip along x (Carter's "
                    "setting): Hertz line pressure, --ny unused")
+    g.add_argument("--gap", default=None, help="non-Hertzian case: the undeformed gap h [m] on a "
+                   "grid, an .npz with keys x, s, h (h[i, j] at x[i], s[j], m) or a CSV with "
+                   "columns x, s, h; the grid is placed over the contact (--Rx, --Ry unused)")
     g = ap.add_argument_group("geometry, load, material")
     g.add_argument("--load", type=float, default=SPEC["load"], help="normal load F_N [N], > 0 "
                    "[default 140.3e3]")
@@ -135,6 +173,10 @@ def parse(argv):
                    "wheel [N] (--line: N/m) instead of --creepage; |F_x| < f F_N (Coulomb), f_S F_N "
                    "(exponential)")
     g.add_argument("--eta", type=float, default=0.0, help="lateral creepage, -1..1 [default 0]")
+    g.add_argument("--phi", type=float, default=0.0, help="spin creepage phi = Omega_z / V "
+                   "[1/m], -1e3..1e3; rigid slip (xi - phi y, eta + phi x) [default 0]")
+    g.add_argument("--fy", type=float, default=None, help="lateral force on the wheel over F_N "
+                   "instead of --eta; |F_y/F_N| < f (Coulomb), f_S (exponential); not with --Fx")
     g.add_argument("--speed", type=float, default=SPEC["speed"], help="rolling speed V [m/s], "
                    "> 0 [default 38.89]")
     g.add_argument("--law", choices=["coulomb", "exponential"], default="coulomb",
@@ -160,6 +202,7 @@ def parse(argv):
     limits = [("--nx", args.nx, 4, 512), ("--ny", args.ny, 3, 511),
               ("--margin", args.margin, 1.01, 5.0), ("--nu", args.nu, 0.0, 0.49),
               ("--creepage", args.creepage, -1.0, 1.0), ("--eta", args.eta, -1.0, 1.0),
+              ("--phi", args.phi, -1e3, 1e3),
               ("--f", args.f, 1e-6, 2.0), ("--fS", args.f_s, 1e-6, 2.0),
               ("--fD", args.f_d, 1e-6, 2.0), ("--k", args.k, 0.0, 1e6),
               ("--relaxation-length", args.relaxation_length, 0.0, 1.0),
@@ -182,6 +225,16 @@ def parse(argv):
         raise InputError("--fD = %g must not exceed --fS = %g" % (args.f_d, args.f_s))
     if args.fx is not None and args.creepage != 0.0:
         raise InputError("--Fx and --creepage are exclusive; give one")
+    new_3d = [n for n, v in (("--phi", args.phi != 0.0), ("--fy", args.fy is not None),
+                             ("--gap", args.gap)) if v]
+    if args.line and new_3d:
+        raise InputError("%s: not with --line (the strip has no lateral direction)" % new_3d[0])
+    if args.fy is not None and (args.fx is not None or args.eta != 0.0):
+        raise InputError("--fy excludes --Fx and --eta (one prescribed force; --fy sets eta)")
+    if args.fy is not None and not abs(args.fy) < 1.0:
+        raise InputError("--fy = %g must lie in (-1, 1) (and below the friction limit)" % args.fy)
+    if args.gap and not os.path.isfile(args.gap):
+        raise InputError("--gap = %s is not a file" % args.gap)
     if args.out and os.path.exists(args.out) and not os.path.isdir(args.out):
         raise InputError("--out = %s exists and is not a directory" % args.out)
     return args
