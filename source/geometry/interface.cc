@@ -23,9 +23,10 @@ namespace WheelRail
     namespace GeometryModels
     {
       // each defined in source/geometry/NAME.cc
-      GeometryModel::Factory wheel_and_rail;
-      GeometryModel::Factory bar;
-      GeometryModel::Factory block_on_plate;
+      GeometryModel::Factory      wheel_and_rail;
+      GeometryModel::Declarations wheel_and_rail_declarations;
+      GeometryModel::Factory      bar;
+      GeometryModel::Factory      block_on_plate;
     } // namespace GeometryModels
 
 
@@ -44,7 +45,9 @@ namespace WheelRail
       /** The registry: one line per geometry, in the order of the
        *  Selection of Problem/Geometry (the first is its default). */
       const Registration registry[] = {
-        {"wheel and rail", &GeometryModels::wheel_and_rail, nullptr},
+        {"wheel and rail",
+         &GeometryModels::wheel_and_rail,
+         &GeometryModels::wheel_and_rail_declarations},
         {"bar", &GeometryModels::bar, nullptr},
         {"block on plate", &GeometryModels::block_on_plate, nullptr},
       };
@@ -155,6 +158,22 @@ namespace WheelRail
     GeometryModel::wheel_centre() const
     {
       return Geometry::wheel_centre(p);
+    }
+
+
+
+    double
+    GeometryModel::rolling_radius() const
+    {
+      return p.wheel_radius;
+    }
+
+
+
+    std::string
+    GeometryModel::description() const
+    {
+      return {};
     }
 
 

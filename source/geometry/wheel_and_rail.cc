@@ -1,20 +1,24 @@
 /**
  * @file geometry/wheel_and_rail.cc
- * The geometry "wheel and rail" (SPEC 1): the wheel, a cylinder about the
- * axle with a bore, on the rail head, a box whose top is the circular
- * crown of Geometry/Rail/Profile radius, refined towards the solution zone
- * and the rolling path. The coarse mesh, the rail's chart and the
- * refinement are in source/mesh/.
+ * The geometry "wheel and rail" (SPEC 1 and 10): the wheel, revolved about
+ * the axle with a bore, on the rail head, extruded along x, refined towards
+ * the solution zone, the further contact points and the rolling path. The
+ * shapes are the paper's (a cylinder on the circular crown of
+ * Geometry/Rail/Profile radius) or profiles read from files
+ * (Geometry/Profiles, geometry/wheel_rail_shape.h). The coarse mesh, the
+ * charts and the refinement are in source/mesh/.
  */
 
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/tria.h>
 
 #include <wheelrail/geometry/interface.h>
+#include <wheelrail/geometry/wheel_rail_shape.h>
 #include <wheelrail/mesh/coarse_mesh.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/mesh/rail_chart.h>
 #include <wheelrail/mesh/refinement.h>
+#include <wheelrail/mesh/wheel_chart.h>
 #include <wheelrail/simulator/format.h>
 
 #include <algorithm>
@@ -38,7 +42,11 @@ namespace WheelRail
       class WheelAndRail : public GeometryModel
       {
       public:
-        using GeometryModel::GeometryModel;
+        WheelAndRail(const GeometryParameters &parameters, const ProfileParameters &profiles)
+          : GeometryModel(parameters)
+          , profiles(profiles)
+          , shape(parameters, profiles)
+        {}
 
         std::vector<Body>
         bodies() const override
@@ -59,7 +67,7 @@ namespace WheelRail
         create_coarse_mesh(std::vector<Point<dim>>    &vertices,
                            std::vector<CellData<dim>> &cells) const override
         {
-          internal::build_wheel_and_rail(p, vertices, cells);
+          internal::build_wheel_and_rail(p, shape, vertices, cells);
         }
 
         void
@@ -74,14 +82,14 @@ namespace WheelRail
         void
         refine(parallel::distributed::Triangulation<dim> &triangulation) const override
         {
-          internal::refine_wheel_and_rail(p, triangulation);
+          internal::refine_wheel_and_rail(p, shape, triangulation);
         }
 
         std::optional<ZoneCells>
         zone_cells(const types::material_id                         material,
                    const parallel::distributed::Triangulation<dim> &triangulation) const override
         {
-          return internal::zone_cells(p, material, triangulation);
+          return internal::zone_cells(p, shape, material, triangulation);
         }
 
         bool
@@ -96,13 +104,39 @@ namespace WheelRail
           return true;
         }
 
+        Point<dim>
+        wheel_centre() const override
+        {
+          return shape.wheel_centre();
+        }
+
+        double
+        rolling_radius() const override
+        {
+          return shape.rolling_radius();
+        }
+
         ContactRadii
         contact_radii() const override
         {
-          return {p.wheel_radius, p.rail_profile_radius};
+          const RigidContact &c = shape.contacts().front();
+          return {c.rolling_radius, c.radius_across};
+        }
+
+        std::string
+        description() const override
+        {
+          return profiles.from_files() ? shape.description() : std::string();
         }
 
       private:
+        const ProfileParameters profiles;
+        const WheelRailShape    shape;
+
+        /** Volume of a body with profiles from files, by quadrature [m^3]. */
+        double
+        profile_volume(const types::material_id material) const;
+
         /** Coarse cells of the wheel and of the rail head, as
          *  build_wheel_and_rail() divides them without alignment. */
         std::pair<double, double>
@@ -126,11 +160,17 @@ namespace WheelRail
       WheelAndRail::bounding_boxes() const
       {
         std::vector<Box> boxes;
-        boxes.push_back({Point<3>(p.rail_start_x, -0.5 * p.rail_head_width, -p.rail_head_height),
-                         Point<3>(p.rail_end_x, 0.5 * p.rail_head_width, 0)});
-        const double zc = p.wheel_centre_z(), R = p.wheel_radius;
-        boxes.push_back({Point<3>(p.wheel_centre_x - R, -0.5 * p.tread_width, zc - R),
-                         Point<3>(p.wheel_centre_x + R, 0.5 * p.tread_width, zc + R)});
+        double           top = 0; // the crown's top is O
+        if (profiles.from_files())
+          for (unsigned int i = 0; i <= 1000; ++i)
+            top = std::max(top,
+                           shape.rail_top(shape.rail_y_lo +
+                                          i * (shape.rail_y_hi - shape.rail_y_lo) / 1000));
+        boxes.push_back({Point<3>(p.rail_start_x, shape.rail_y_lo, -p.rail_head_height),
+                         Point<3>(p.rail_end_x, shape.rail_y_hi, top)});
+        const double zc = shape.wheel_centre()[2], R = shape.largest_wheel_radius();
+        boxes.push_back({Point<3>(p.wheel_centre_x - R, shape.wheel_y_lo, zc - R),
+                         Point<3>(p.wheel_centre_x + R, shape.wheel_y_hi, zc + R)});
         return boxes;
       }
 
@@ -139,6 +179,8 @@ namespace WheelRail
       double
       WheelAndRail::exact_volume(const types::material_id material) const
       {
+        if (profiles.from_files())
+          return profile_volume(material);
         if (material == MaterialIds::wheel)
           return M_PI * (p.wheel_radius * p.wheel_radius - p.bore_radius * p.bore_radius) *
                  p.tread_width;
@@ -152,11 +194,40 @@ namespace WheelRail
 
 
 
+      double
+      WheelAndRail::profile_volume(const types::material_id material) const
+      {
+        // 3-point Gauss-Legendre on 4000 intervals: the profiles are cubic
+        // splines with knots at least 1e-2 mm apart, integrated to ~1e-12
+        const bool   wheel = material == MaterialIds::wheel;
+        const double lo    = wheel ? shape.wheel_y_lo : shape.rail_y_lo;
+        const double hi    = wheel ? shape.wheel_y_hi : shape.rail_y_hi;
+        const auto   f     = [&](const double y) {
+          if (wheel)
+            {
+              const double r = shape.wheel_radius(y);
+              return M_PI * (r * r - p.bore_radius * p.bore_radius);
+            }
+          return (shape.rail_top(y) + p.rail_head_height) * (p.rail_end_x - p.rail_start_x);
+        };
+        const unsigned int n = 4000;
+        const double       d = (hi - lo) / n, g = std::sqrt(0.6);
+        double             sum = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const double m = lo + (i + 0.5) * d;
+            sum += (5 * f(m - 0.5 * d * g) + 8 * f(m) + 5 * f(m + 0.5 * d * g)) / 18 * d;
+          }
+        return sum;
+      }
+
+
+
       std::pair<double, double>
       WheelAndRail::coarse_cells() const
       {
         const double coarse  = internal::effective_coarse_size(p);
-        const double R       = p.wheel_radius;
+        const double R       = shape.rolling_radius();
         double       n_theta = p.wheel_circumferential_cells;
         if (n_theta == 0)
           n_theta = 4 * std::ceil(2 * M_PI * R / (4 * 4 * coarse));
@@ -164,9 +235,10 @@ namespace WheelRail
         const double d_theta = 2 * M_PI / n_theta;
         const double n_radial =
           std::max(1., std::round(std::log(p.bore_radius / R) / std::log(1 - d_theta)));
-        const double n_y  = std::max(1., std::ceil(p.tread_width / (4 * coarse) - 1e-9));
+        const double n_y =
+          std::max(1., std::ceil((shape.wheel_y_hi - shape.wheel_y_lo) / (4 * coarse) - 1e-9));
         const double rail = std::ceil((p.rail_end_x - p.rail_start_x) / coarse - 1e-9) *
-                            std::ceil(p.rail_head_width / coarse - 1e-9) *
+                            std::ceil((shape.rail_y_hi - shape.rail_y_lo) / coarse - 1e-9) *
                             std::ceil(p.rail_head_height / coarse - 1e-9);
         return {n_theta * n_y * n_radial, rail};
       }
@@ -192,11 +264,13 @@ namespace WheelRail
       types::boundary_id
       WheelAndRail::wheel_boundary_id(const Point<dim> &c) const
       {
-        const Point<dim> centre = Geometry::wheel_centre(p);
+        const Point<dim> centre = shape.wheel_centre();
         const double     r      = std::hypot(c[0] - centre[0], c[2] - centre[2]);
-        if (std::abs(std::abs(c[1]) - 0.5 * p.tread_width) < eps * p.tread_width)
+        const double     width  = shape.wheel_y_hi - shape.wheel_y_lo;
+        if (std::abs(c[1] - shape.wheel_y_lo) < eps * width ||
+            std::abs(c[1] - shape.wheel_y_hi) < eps * width)
           return BoundaryIds::wheel_side;
-        else if (r > 0.5 * (p.wheel_radius + p.bore_radius))
+        else if (r > 0.5 * (shape.rolling_radius() + p.bore_radius))
           return BoundaryIds::wheel_tread;
         else
           return BoundaryIds::wheel_bore;
@@ -208,15 +282,16 @@ namespace WheelRail
       WheelAndRail::rail_boundary_id(const internal::RailChart               &chart,
                                      const Triangulation<dim>::face_iterator &face) const
       {
-        const double H   = p.rail_head_height;
+        const double H     = p.rail_head_height;
+        const double width = shape.rail_y_hi - shape.rail_y_lo;
         bool         top = true, bottom = true, side = true;
         for (unsigned int v = 0; v < 4; ++v)
           {
             const Point<dim> q = chart.pull_back(face->vertex(v));
             top                = top && std::abs(q[2]) < eps * H;
             bottom             = bottom && std::abs(q[2] + H) < eps * H;
-            side =
-              side && std::abs(std::abs(q[1]) - 0.5 * p.rail_head_width) < eps * p.rail_head_width;
+            side               = side && (std::abs(q[1] - shape.rail_y_lo) < eps * width ||
+                            std::abs(q[1] - shape.rail_y_hi) < eps * width);
           }
         return top    ? BoundaryIds::rail_top :
                bottom ? BoundaryIds::rail_bottom :
@@ -229,7 +304,7 @@ namespace WheelRail
       void
       WheelAndRail::set_boundary_ids(Triangulation<dim> &coarse) const
       {
-        const internal::RailChart chart(p.rail_head_height, p.rail_profile_radius);
+        const internal::RailChart chart(p.rail_head_height, shape.rail_curve());
         for (const auto &cell : coarse.active_cell_iterators())
           for (const unsigned int f : cell->face_indices())
             if (cell->face(f)->at_boundary())
@@ -255,11 +330,18 @@ namespace WheelRail
       void
       WheelAndRail::attach_manifolds(parallel::distributed::Triangulation<dim> &triangulation) const
       {
-        triangulation.set_manifold(ManifoldIds::wheel,
-                                   CylindricalManifold<dim>(Tensor<1, dim>({0., 1., 0.}),
-                                                            Geometry::wheel_centre(p)));
+        if (shape.cylindrical_wheel())
+          triangulation.set_manifold(ManifoldIds::wheel,
+                                     CylindricalManifold<dim>(Tensor<1, dim>({0., 1., 0.}),
+                                                              shape.wheel_centre()));
+        else
+          triangulation.set_manifold(ManifoldIds::wheel,
+                                     internal::RevolvedProfileChart(shape.wheel_centre(),
+                                                                    shape.rolling_radius(),
+                                                                    p.bore_radius,
+                                                                    shape.wheel_curve()));
         triangulation.set_manifold(ManifoldIds::rail,
-                                   internal::RailChart(p.rail_head_height, p.rail_profile_radius));
+                                   internal::RailChart(p.rail_head_height, shape.rail_curve()));
       }
     } // namespace
 
@@ -268,9 +350,19 @@ namespace WheelRail
     namespace GeometryModels
     {
       std::unique_ptr<GeometryModel>
-      wheel_and_rail(const GeometryParameters &parameters, ParameterHandler &)
+      wheel_and_rail(const GeometryParameters &parameters, ParameterHandler &prm)
       {
-        return std::make_unique<WheelAndRail>(parameters);
+        ProfileParameters profiles;
+        profiles.parse_parameters(prm, parameters.input_directory);
+        return std::make_unique<WheelAndRail>(parameters, profiles);
+      }
+
+
+
+      void
+      wheel_and_rail_declarations(ParameterHandler &prm)
+      {
+        ProfileParameters::declare_parameters(prm);
       }
     } // namespace GeometryModels
   }   // namespace Geometry

@@ -51,23 +51,20 @@ namespace WheelRail
        * cut of atan2 at the top of the wheel.
        */
       std::array<double, 3>
-      chart_coordinates(const GeometryParameters &p,
-                        const types::material_id  material,
-                        const Point<dim>         &x,
-                        const double              theta_ref)
+      chart_coordinates(const WheelRailShape    &shape,
+                        const types::material_id material,
+                        const Point<dim>        &x,
+                        const double             theta_ref)
       {
         if (material == MaterialIds::rail)
-          {
-            const double top =
-              std::sqrt(p.rail_profile_radius * p.rail_profile_radius - x[1] * x[1]) -
-              p.rail_profile_radius;
-            return {{x[0], x[1], top - x[2]}};
-          }
-        const Point<dim> centre = wheel_centre(p);
+          return {{x[0], x[1], shape.rail_top(x[1]) - x[2]}};
+        const Point<dim> centre = shape.wheel_centre();
         const double     dx     = x[0] - centre[0];
         const double     dz     = x[2] - centre[2];
         const double theta = theta_ref + std::remainder(std::atan2(dx, -dz) - theta_ref, 2 * M_PI);
-        return {{p.wheel_radius * theta, x[1], p.wheel_radius - std::sqrt(dx * dx + dz * dz)}};
+        return {{shape.rolling_radius() * theta,
+                 x[1],
+                 shape.wheel_radius(x[1]) - std::sqrt(dx * dx + dz * dz)}};
       }
 
 
@@ -86,6 +83,7 @@ namespace WheelRail
        */
       double
       target_size(const GeometryParameters    &p,
+                  const WheelRailShape        &shape,
                   const types::material_id     material,
                   const std::array<double, 3> &centre,
                   const ChartBox              &cell_box,
@@ -93,13 +91,14 @@ namespace WheelRail
                   const bool                   whole_zone)
       {
         const double          g = p.grading;
-        const RefinementBoxes b = refinement_boxes(p, material);
+        const RefinementBoxes b = refinement_boxes(p, shape, material);
         double                h = (material == MaterialIds::rail) ? coarse : coarse + g * centre[2];
         if (b.has_zone)
-          h = std::min(h,
-                       whole_zone && cell_box.overlaps(b.zone) ?
-                         p.h_min :
-                         p.h_min + g * b.zone.distance(centre));
+          for (const ChartBox &zone : b.zones())
+            h =
+              std::min(h,
+                       whole_zone && cell_box.overlaps(zone) ? p.h_min :
+                                                               p.h_min + g * zone.distance(centre));
         if (b.has_path)
           {
             const double hp = std::max(p.path_cell_size, p.h_min);
@@ -117,16 +116,17 @@ namespace WheelRail
        */
       template <typename CellIterator>
       std::pair<std::array<double, 3>, ChartBox>
-      cell_in_chart(const GeometryParameters &p, const CellIterator &cell)
+      cell_in_chart(const WheelRailShape &shape, const CellIterator &cell)
       {
         const Point<dim> c         = cell->center();
-        const Point<dim> axle      = wheel_centre(p);
+        const Point<dim> axle      = shape.wheel_centre();
         const double     theta_ref = std::atan2(c[0] - axle[0], -(c[2] - axle[2]));
-        const auto       centre    = chart_coordinates(p, cell->material_id(), c, theta_ref);
+        const auto       centre    = chart_coordinates(shape, cell->material_id(), c, theta_ref);
         ChartBox         box{centre, centre};
         for (const unsigned int v : cell->vertex_indices())
           {
-            const auto q = chart_coordinates(p, cell->material_id(), cell->vertex(v), theta_ref);
+            const auto q =
+              chart_coordinates(shape, cell->material_id(), cell->vertex(v), theta_ref);
             for (unsigned int d = 0; d < 3; ++d)
               {
                 box.lo[d] = std::min(box.lo[d], q[d]);
@@ -142,6 +142,7 @@ namespace WheelRail
       template <typename CellIterator>
       double
       target_size(const GeometryParameters &p,
+                  const WheelRailShape     &shape,
                   const CellIterator       &cell,
                   const double              coarse,
                   const bool                whole_zone)
@@ -149,8 +150,8 @@ namespace WheelRail
         const types::material_id material = cell->material_id();
         if (material != MaterialIds::rail && material != MaterialIds::wheel)
           return std::numeric_limits<double>::max(); // the bar is not refined
-        const auto [centre, box] = cell_in_chart(p, cell);
-        return target_size(p, material, centre, box, coarse, whole_zone);
+        const auto [centre, box] = cell_in_chart(shape, cell);
+        return target_size(p, shape, material, centre, box, coarse, whole_zone);
       }
     } // namespace
 
@@ -169,7 +170,9 @@ namespace WheelRail
 
 
       RefinementBoxes
-      refinement_boxes(const GeometryParameters &p, const types::material_id material)
+      refinement_boxes(const GeometryParameters &p,
+                       const WheelRailShape     &shape,
+                       const types::material_id  material)
       {
         RefinementBoxes b;
         const double    w = p.zone_half_width;
@@ -192,6 +195,16 @@ namespace WheelRail
             b.has_path      = p.path_cell_size > 0;
             b.path          = {{{-w, -w, 0}}, {{p.rail_end_x - p.wheel_centre_x, w, p.zone_depth}}};
           }
+        // a further contact point (two-point contact): the zone's box
+        // moved across to it
+        for (std::size_t i = 1; i < shape.contacts().size(); ++i)
+          {
+            ChartBox     zone = b.zone;
+            const double y    = shape.contacts()[i].y;
+            zone.lo[1] += y;
+            zone.hi[1] += y;
+            b.further_zones.push_back(zone);
+          }
         return b;
       }
 
@@ -199,6 +212,7 @@ namespace WheelRail
 
       void
       refine_wheel_and_rail(const GeometryParameters                  &p,
+                            const WheelRailShape                      &shape,
                             parallel::distributed::Triangulation<dim> &triangulation)
       {
         // Two passes: the grading from the cells' centres first (the meshes
@@ -226,7 +240,7 @@ namespace WheelRail
                 if (cell->is_locally_owned())
                   {
                     const double l = longest_edge(cell);
-                    const double h = target_size(p, cell, coarse_size, whole_zone);
+                    const double h = target_size(p, shape, cell, coarse_size, whole_zone);
                     if (l > (1 + 1e-6) * h)
                       {
                         cell->set_refine_flag();
@@ -249,16 +263,17 @@ namespace WheelRail
 
     ZoneCells
     internal::zone_cells(const GeometryParameters                        &p,
+                         const WheelRailShape                            &shape,
                          const types::material_id                         material,
                          const parallel::distributed::Triangulation<dim> &triangulation)
     {
       ZoneCells             z;
-      const RefinementBoxes b = refinement_boxes(p, material);
+      const RefinementBoxes b = refinement_boxes(p, shape, material);
       if (b.has_zone)
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() && cell->material_id() == material)
             {
-              const ChartBox box = cell_in_chart(p, cell).second;
+              const ChartBox box = cell_in_chart(shape, cell).second;
               if (box.overlaps(b.zone))
                 {
                   ++z.n_cells;

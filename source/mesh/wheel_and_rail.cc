@@ -16,6 +16,7 @@
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/mesh/rail_chart.h>
 #include <wheelrail/mesh/refinement.h>
+#include <wheelrail/mesh/wheel_chart.h>
 
 #include <algorithm>
 #include <cmath>
@@ -80,11 +81,13 @@ namespace WheelRail
        */
       void
       add_wheel_uniform(const GeometryParameters   &p,
+                        const WheelRailShape       &shape,
                         const double                coarse,
                         std::vector<Point<dim>>    &vertices,
                         std::vector<CellData<dim>> &cells)
       {
-        const double R       = p.wheel_radius;
+        const double R  = shape.rolling_radius();
+        const double y0 = shape.wheel_y_lo, width = shape.wheel_y_hi - shape.wheel_y_lo;
         unsigned int n_theta = p.wheel_circumferential_cells;
         if (n_theta == 0)
           n_theta = 4 * static_cast<unsigned int>(std::ceil(2 * M_PI * R / (4 * 4 * coarse)));
@@ -95,9 +98,8 @@ namespace WheelRail
           std::max<unsigned int>(1,
                                  std::round(std::log(p.bore_radius / R) / std::log(1 - d_theta)));
         const double       ratio = std::pow(p.bore_radius / R, 1. / n_radial);
-        const unsigned int n_y =
-          std::max<unsigned int>(1, std::ceil(p.tread_width / (4 * coarse) - 1e-9));
-        const Point<dim> centre = wheel_centre(p);
+        const unsigned int n_y = std::max<unsigned int>(1, std::ceil(width / (4 * coarse) - 1e-9));
+        const Point<dim>   centre = shape.wheel_centre();
         add_block(
           n_theta,
           n_y,
@@ -108,11 +110,41 @@ namespace WheelRail
             const double r = R * std::pow(ratio, k);
             const double t = i * d_theta;
             return Point<dim>(centre[0] + r * std::sin(t),
-                              -0.5 * p.tread_width + j * p.tread_width / n_y,
+                              y0 + j * width / n_y,
                               centre[2] - r * std::cos(t));
           },
           vertices,
           cells);
+      }
+
+
+
+      /**
+       * How much longer than on the cylinder of the rolling radius at O an
+       * edge of the revolved profile is, at most, over [y_lo, y_hi]:
+       * circumferential edges scale with r(y) / r_O, radial ones with
+       * (r(y) - r_b) / (r_O - r_b), lateral ones with sqrt(1 + r'(y)^2).
+       */
+      double
+      tread_stretch(const WheelRailShape &shape,
+                    const double          bore_radius,
+                    const double          y_lo,
+                    const double          y_hi)
+      {
+        const double r_O     = shape.rolling_radius();
+        double       stretch = 1;
+        for (unsigned int i = 0; i <= 400; ++i)
+          {
+            const double y = y_lo + i * (y_hi - y_lo) / 400;
+            const double r = shape.wheel_radius(y);
+            const double slope =
+              shape.wheel_curve()->slope(std::min(std::max(y, shape.wheel_y_lo), shape.wheel_y_hi));
+            stretch = std::max({stretch,
+                                r / r_O,
+                                (r - bore_radius) / (r_O - bore_radius),
+                                std::sqrt(1 + slope * slope)});
+          }
+        return stretch;
       }
 
 
@@ -127,15 +159,28 @@ namespace WheelRail
        */
       void
       add_wheel_aligned(const GeometryParameters   &p,
+                        const WheelRailShape       &shape,
                         const double                coarse,
                         std::vector<Point<dim>>    &vertices,
                         std::vector<CellData<dim>> &cells)
       {
-        const double        R      = p.wheel_radius;
-        const Point<dim>    centre = wheel_centre(p);
-        const double        hw = 4 * coarse, sO = -p.wheel_centre_x;
-        const double        w = p.zone_half_width, turn = 2 * M_PI * R;
-        std::vector<double> s = aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
+        const double     R      = shape.rolling_radius();
+        const Point<dim> centre = shape.wheel_centre();
+        const double     w = p.zone_half_width, turn = 2 * M_PI * R;
+        // on a revolved profile, cells that refine onto at most h_min over
+        // the zones (the contact points' included)
+        double y_lo = -w - 2 * p.h_min, y_hi = w + 2 * p.h_min;
+        for (const RigidContact &c : shape.contacts())
+          {
+            y_lo = std::min(y_lo, c.y - w - 2 * p.h_min);
+            y_hi = std::max(y_hi, c.y + w + 2 * p.h_min);
+          }
+        const double hw =
+          shape.cylindrical_wheel() ?
+            4 * coarse :
+            4 * coarse / tread_stretch(shape, p.bore_radius, y_lo, y_hi) * (1 - 1e-9);
+        const double        sO = -p.wheel_centre_x;
+        std::vector<double> s  = aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
                                               sO - 0.5 * p.zone_length + 0.5 * turn,
                                               sO - 0.5 * p.zone_length,
                                               sO + 0.5 * p.zone_length,
@@ -145,7 +190,7 @@ namespace WheelRail
         // rail's lines): symmetric about y = 0, at +-h_min / 2, ...
         const double              shift = 0.5 * p.h_min;
         const std::vector<double> y =
-          aligned_lines(-0.5 * p.tread_width, 0.5 * p.tread_width, -w + shift, w + shift, hw);
+          aligned_lines(shape.wheel_y_lo, shape.wheel_y_hi, -w + shift, w + shift, hw);
         // radii: the top layer hw thick over the zone's depth, then
         // geometric layers of about square cells down to the bore
         std::vector<double> r     = {R};
@@ -180,6 +225,7 @@ namespace WheelRail
        *  coarse size @p coarse, pushed onto the arc top by @p chart. */
       void
       add_rail_uniform(const GeometryParameters   &p,
+                       const WheelRailShape       &shape,
                        const double                coarse,
                        const RailChart            &chart,
                        std::vector<Point<dim>>    &vertices,
@@ -187,7 +233,8 @@ namespace WheelRail
       {
         const double       L  = p.rail_end_x - p.rail_start_x;
         const unsigned int nx = std::ceil(L / coarse - 1e-9);
-        const unsigned int ny = std::ceil(p.rail_head_width / coarse - 1e-9);
+        const double       y0 = shape.rail_y_lo, width = shape.rail_y_hi - shape.rail_y_lo;
+        const unsigned int ny = std::ceil(width / coarse - 1e-9);
         const unsigned int nz = std::ceil(p.rail_head_height / coarse - 1e-9);
         add_block(
           nx,
@@ -198,7 +245,7 @@ namespace WheelRail
           [&](unsigned int i, unsigned int j, unsigned int k) {
             return chart.push_forward(
               Point<dim>(p.rail_start_x + i * L / nx,
-                         -0.5 * p.rail_head_width + j * p.rail_head_width / ny,
+                         y0 + j * width / ny,
                          -p.rail_head_height + k * p.rail_head_height / nz));
           },
           vertices,
@@ -212,20 +259,29 @@ namespace WheelRail
        *  @p chart. */
       void
       add_rail_aligned(const GeometryParameters   &p,
+                       const WheelRailShape       &shape,
                        const double                coarse,
                        const RailChart            &chart,
                        std::vector<Point<dim>>    &vertices,
                        std::vector<CellData<dim>> &cells)
       {
-        // on the arc top a lateral edge is longer than its chart
-        // length (slope s at the aligned block's side): cells of
+        // on the curved top a lateral edge is longer than its chart
+        // length (slope s at the aligned block's sides): cells of
         // coarse / sqrt(1 + s^2) refine onto at most h_min there
-        const double       w     = p.zone_half_width;
-        const unsigned int n_w   = std::max(1., std::ceil(2 * w / coarse - 1e-9));
-        const double       side  = std::min(0.5 * n_w * coarse, 0.5 * p.rail_head_width);
-        const double       rho   = p.rail_profile_radius;
-        const double       slope = side / std::sqrt(rho * rho - side * side);
-        const double       h     = coarse / std::sqrt(1 + slope * slope) * (1 - 1e-9);
+        const double        w     = p.zone_half_width;
+        const unsigned int  n_w   = std::max(1., std::ceil(2 * w / coarse - 1e-9));
+        const double        right = std::min(0.5 * n_w * coarse, shape.rail_y_hi);
+        const double        left  = std::max(-0.5 * n_w * coarse, shape.rail_y_lo);
+        const ProfileCurve &top   = *shape.rail_curve();
+        const double        slope = std::max(std::abs(top.slope(left)), std::abs(top.slope(right)));
+        // and a vertical edge is longer by (H + z_top) / H where the top
+        // lies above O (an inclined or off-centre profile)
+        double highest = 0;
+        for (unsigned int i = 0; i <= 400; ++i)
+          highest = std::max(highest, shape.rail_top(left + i * (right - left) / 400));
+        const double stretch = std::max(std::sqrt(1 + slope * slope),
+                                        (p.rail_head_height + highest) / p.rail_head_height);
+        const double h       = coarse / stretch * (1 - 1e-9);
         // Wheel (slave) and rail (master) nodes must not coincide: with
         // equal grids each slave force lands on one master node, and
         // the pressure takes the one-point elements' checkerboard mode
@@ -236,8 +292,7 @@ namespace WheelRail
         // that the offsets run through a whole cell every 25 nodes.
         const std::vector<double> x = aligned_lines(
           p.rail_start_x, p.rail_end_x, -0.5 * p.zone_length, 0.5 * p.zone_length, 0.96 * h);
-        const std::vector<double> y =
-          aligned_lines(-0.5 * p.rail_head_width, 0.5 * p.rail_head_width, -w, w, h);
+        const std::vector<double> y = aligned_lines(shape.rail_y_lo, shape.rail_y_hi, -w, w, h);
         const std::vector<double> z = aligned_lines(-p.rail_head_height, 0, -p.zone_depth, 0, h);
         add_block(
           x.size() - 1,
@@ -251,6 +306,30 @@ namespace WheelRail
           vertices,
           cells);
       }
+
+
+
+      /** Move the wheel's vertices from @p first on (built on the cylinder
+       *  of the rolling radius at O) onto the revolved profile: the
+       *  push-forward of RevolvedProfileChart. */
+      void
+      revolve_profile(const WheelRailShape    &shape,
+                      const double             bore_radius,
+                      const std::size_t        first,
+                      std::vector<Point<dim>> &vertices)
+      {
+        const RevolvedProfileChart chart(shape.wheel_centre(),
+                                         shape.rolling_radius(),
+                                         bore_radius,
+                                         shape.wheel_curve());
+        const Point<dim>           c = shape.wheel_centre();
+        for (std::size_t v = first; v < vertices.size(); ++v)
+          {
+            const double dx = vertices[v][0] - c[0], dz = vertices[v][2] - c[2];
+            vertices[v] = chart.push_forward(
+              Point<dim>(std::atan2(dx, -dz), vertices[v][1], std::sqrt(dx * dx + dz * dz)));
+          }
+      }
     } // namespace
 
 
@@ -259,21 +338,25 @@ namespace WheelRail
     {
       void
       build_wheel_and_rail(const GeometryParameters   &p,
+                           const WheelRailShape       &shape,
                            std::vector<Point<dim>>    &vertices,
                            std::vector<CellData<dim>> &cells)
       {
         const double coarse = effective_coarse_size(p);
         const bool   align  = p.align_zone && p.zone_length > 0;
         // the wheel's cells first, then the rail's
+        const std::size_t first_wheel_vertex = vertices.size();
         if (align)
-          add_wheel_aligned(p, coarse, vertices, cells);
+          add_wheel_aligned(p, shape, coarse, vertices, cells);
         else
-          add_wheel_uniform(p, coarse, vertices, cells);
-        const RailChart chart(p.rail_head_height, p.rail_profile_radius);
+          add_wheel_uniform(p, shape, coarse, vertices, cells);
+        if (!shape.cylindrical_wheel())
+          revolve_profile(shape, p.bore_radius, first_wheel_vertex, vertices);
+        const RailChart chart(p.rail_head_height, shape.rail_curve());
         if (align)
-          add_rail_aligned(p, coarse, chart, vertices, cells);
+          add_rail_aligned(p, shape, coarse, chart, vertices, cells);
         else
-          add_rail_uniform(p, coarse, chart, vertices, cells);
+          add_rail_uniform(p, shape, coarse, chart, vertices, cells);
       }
     } // namespace internal
   }   // namespace Geometry

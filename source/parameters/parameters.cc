@@ -12,6 +12,7 @@
 #include <wheelrail/parameters/parameter_file.h>
 #include <wheelrail/parameters/parameters.h>
 
+#include <filesystem>
 #include <string>
 
 namespace WheelRail
@@ -41,6 +42,7 @@ namespace WheelRail
     ParameterFile::parse(prm, filename);
     problem.parse_parameters(prm);
     geometry.parse_parameters(prm);
+    geometry.input_directory = std::filesystem::path(filename).parent_path().string();
     geometry_model = Geometry::GeometryModel::create(problem.geometry, geometry, prm);
     material.parse_parameters(prm);
     solver.parse_parameters(prm);

@@ -1,5 +1,6 @@
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/output_files.h>
 #include <wheelrail/postprocess/probes.h>
@@ -27,14 +28,14 @@ namespace WheelRail
       {
         // the wheel-tread node that reaches O: the arc from the lowest point
         // towards +x equals the rolling distance from A to O
-        const GeometryParameters &g   = access.parameters.geometry;
-        const double              phi = -g.wheel_centre_x / g.wheel_radius;
-        const Point<dim>          c   = Geometry::wheel_centre(g);
+        const GeometryParameters &g      = access.parameters.geometry;
+        const double              radius = access.parameters.geometry_model->rolling_radius();
+        const double              phi    = -g.wheel_centre_x / radius;
+        const Point<dim>          c      = access.parameters.geometry_model->wheel_centre();
         probes.emplace_back();
-        probes.back().file     = "wheel_probe.csv";
-        probes.back().target   = Point<dim>(c[0] + g.wheel_radius * std::sin(phi),
-                                          0.,
-                                          c[2] - g.wheel_radius * std::cos(phi));
+        probes.back().file = "wheel_probe.csv";
+        probes.back().target =
+          Point<dim>(c[0] + radius * std::sin(phi), 0., c[2] - radius * std::cos(phi));
         probes.back().material = Geometry::MaterialIds::wheel;
       }
     const auto &points = access.solver.support_points();

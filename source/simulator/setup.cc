@@ -164,7 +164,7 @@ namespace WheelRail
       }
     if (geometry.has_wheel() && parameters.boundary.wheel_bore == WheelBore::rigid_axle)
       {
-        wheelset = std::make_unique<Wheelset>(parameters.wheelset,
+        wheelset          = std::make_unique<Wheelset>(parameters.wheelset,
                                               parameters.solver,
                                               geometry.wheel_centre());
         wheelset_coupling = std::make_unique<WheelsetCoupling>(*wheelset,
@@ -330,8 +330,11 @@ namespace WheelRail
   void
   Simulator::print_setup_summary()
   {
-    const MeshQuality &q = solver->mesh_quality();
-    const double       c = parameters.material.wave_speed();
+    const MeshQuality &q      = solver->mesh_quality();
+    const double       c      = parameters.material.wave_speed();
+    const std::string  shapes = parameters.geometry_model->description();
+    if (!shapes.empty())
+      pcout << "Profiles" << std::endl << "  " << shapes << std::endl;
     pcout << "Mesh" << std::endl
           << "  cells                        : " << triangulation.n_global_active_cells()
           << std::endl
@@ -353,7 +356,8 @@ namespace WheelRail
           << "  Courant number c dt / L_e    : " << fmt(c * dt / q.min_length, 4) << std::endl
           << "  hourglass coefficient QM     : " << fmt(parameters.solver.hourglass_coefficient)
           << std::endl
-          << "  damping                      : " << damping_model_names(parameters.solver.damping_model);
+          << "  damping                      : "
+          << damping_model_names(parameters.solver.damping_model);
     if (solver->damping_model() == DampingModel::stiffness)
       pcout << " (COEF " << fmt(parameters.solver.stiffness_damping_coefficient) << ")";
     else if (solver->damping_model() == DampingModel::rayleigh)

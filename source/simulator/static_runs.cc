@@ -80,7 +80,7 @@ namespace WheelRail
   {
     const VerificationParameters &vp = parameters.verification;
     VectorType                    force;
-    const Tensor<2, dim> G = vp.displacement_gradient;
+    const Tensor<2, dim>          G = vp.displacement_gradient;
     solver->set_displacement([&](const Point<dim> &X) { return G * X; });
     solver->compute_internal_force(force);
     const Tensor<2, dim> Sx =
@@ -105,11 +105,8 @@ namespace WheelRail
                  std::abs(force.local_element(i)));
     max_interior = Utilities::MPI::max(max_interior, mpi_communicator);
     max_boundary = Utilities::MPI::max(max_boundary, mpi_communicator);
-    report_patch_test(pcout,
-                      Sx,
-                      max_stress_error,
-                      max_interior / max_boundary,
-                      static_check_tolerance(parameters));
+    report_patch_test(
+      pcout, Sx, max_stress_error, max_interior / max_boundary, static_check_tolerance(parameters));
   }
 
 
@@ -204,9 +201,9 @@ namespace WheelRail
   void
   Simulator::start_wheelset()
   {
-    const Point<dim> centre = Geometry::wheel_centre(parameters.geometry);
+    const Point<dim> centre = parameters.geometry_model->wheel_centre();
     Point<dim>       axle   = centre;
-    double           radius = parameters.geometry.wheel_radius + parameters.geometry.initial_gap;
+    double radius = parameters.geometry_model->rolling_radius() + parameters.geometry.initial_gap;
     if (parameters.wheelset.static_start)
       {
         AssertThrow(contact, ExcMessage("Wheelset/Static start needs Contact/Enabled = true."));
@@ -217,7 +214,7 @@ namespace WheelRail
           {
             // the wheel of the rolling run spins: include its centrifugal load
             const double omega =
-              parameters.wheelset.rolling_speed / parameters.geometry.wheel_radius;
+              parameters.wheelset.rolling_speed / parameters.geometry_model->rolling_radius();
             solver->add_centrifugal_load(centre, omega);
             StaticContactSolver statics(parameters, *solver, *contact, mpi_communicator);
             r = statics.solve(wheelset->static_load(), solver_log());
@@ -288,7 +285,7 @@ namespace WheelRail
                                             ip.velocity_constants,
                                             "x,y,z",
                                             "Initial conditions/Velocity function");
-    const Point<dim>         centre = Geometry::wheel_centre(parameters.geometry);
+    const Point<dim>         centre = parameters.geometry_model->wheel_centre();
     solver->set_velocity([&](const Point<dim> &X, const types::material_id material) {
       Tensor<1, dim> v;
       for (unsigned int d = 0; d < dim; ++d)

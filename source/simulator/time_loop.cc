@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/base/stop_signal.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/patch_series.h>
@@ -138,7 +139,7 @@ namespace WheelRail
           {
             start_wheelset();
             solver->set_rolling_velocity(wheelset->axle_velocity(),
-                                         Geometry::wheel_centre(parameters.geometry),
+                                         parameters.geometry_model->wheel_centre(),
                                          wheelset->angular_velocity());
           }
         else

@@ -1,6 +1,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/base/stopwatch.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/solver/explicit_solver.h>
@@ -387,7 +388,7 @@ namespace WheelRail
     if (prescribed_velocity)
       prescribed_velocity->set_time(t + 0.5 * dt);
     const double     t_new  = t + dt;
-    const Point<dim> centre = Geometry::wheel_centre(prm.geometry);
+    const Point<dim> centre = prm.geometry_model->wheel_centre();
     const double     omega  = prm.initial.wheel_angular_velocity;
     // the axle's angle at t_new, its cosine and sine once for all its DoFs
     const double spin_c = std::cos(omega * t_new), spin_s = std::sin(omega * t_new);

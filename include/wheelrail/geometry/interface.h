@@ -67,15 +67,16 @@ namespace WheelRail
     };
 
     /**
-     * The local radii of the two surfaces at the contact point, for the
-     * Hertz solution: the wheel's in the rolling plane, the rail's across
-     * the rail (the wheel's transverse and the rail's longitudinal
-     * curvatures are zero in every geometry so far).
+     * The radii of relative curvature of the two surfaces at the main
+     * contact point, for the Hertz solution: along the rolling direction
+     * (the wheel's rolling radius; the rail is straight) and across, in the
+     * tangent plane (the rail's crown radius for the cylindrical wheel;
+     * 1 / (z_w'' - z_r'') cos^-3(delta) for profiles).
      */
     struct ContactRadii
     {
       double wheel_rolling; ///< [m]
-      double rail_crown;    ///< [m]
+      double rail_crown;    ///< across [m]
     };
 
     /** An axis-aligned box [first, second] [m]. */
@@ -186,6 +187,16 @@ namespace WheelRail
        *  Geometry::wheel_centre() of the parameters, whatever the bodies). */
       virtual Point<dim>
       wheel_centre() const;
+
+      /** The wheel's undeformed rolling radius at O [m] (by default
+       *  Geometry/Wheel/Radius). */
+      virtual double
+      rolling_radius() const;
+
+      /** What the bodies' shapes are, for the run's summary (lines; empty
+       *  by default). */
+      virtual std::string
+      description() const;
 
       /** The local radii of the surfaces at the contact (where
        *  has_wheel()). */

@@ -11,6 +11,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <wheelrail/geometry/wheel_rail_shape.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <vector>
@@ -64,6 +65,7 @@ namespace WheelRail
        *  with zone included (wheel_and_rail.cc). */
       void
       build_wheel_and_rail(const GeometryParameters   &p,
+                           const WheelRailShape       &shape,
                            std::vector<Point<dim>>    &vertices,
                            std::vector<CellData<dim>> &cells);
     } // namespace internal

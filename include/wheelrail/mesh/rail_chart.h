@@ -1,7 +1,7 @@
 /**
  * @file mesh/rail_chart.h
- * The manifold of the rail head: the box chart mapped onto the circular
- * profile of the rail top (used by the coarse mesh and the refinement).
+ * The manifold of the rail head: the box chart mapped onto the profile of
+ * the rail top (used by the coarse mesh and the refinement).
  */
 #ifndef wheelrail_mesh_rail_chart_h
 #define wheelrail_mesh_rail_chart_h
@@ -10,10 +10,13 @@
 
 #include <deal.II/grid/manifold.h>
 
+#include <wheelrail/geometry/profile.h>
 #include <wheelrail/parameters/parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 
 namespace WheelRail
 {
@@ -24,21 +27,25 @@ namespace WheelRail
       /**
        * The rail head as a chart: the box (x, y, zeta), zeta in [-H, 0],
        * is mapped to z = -H + (zeta + H)/H (z_top(y) + H), so that zeta = 0
-       * is the circular top z_top(y) = sqrt(rho^2 - y^2) - rho and the
-       * bottom stays flat. Refinement thus stays on the true profile.
+       * is the top z_top(y) of the rail's profile (the circular crown
+       * sqrt(rho^2 - y^2) - rho of the paper, or a profile read from a file)
+       * and the bottom stays flat. Refinement thus stays on the true
+       * profile.
        */
       class RailChart : public ChartManifold<dim>
       {
       public:
-        RailChart(const double height, const double profile_radius)
+        RailChart(const double height, std::shared_ptr<const ProfileCurve> profile)
           : height(height)
-          , radius(profile_radius)
+          , profile(std::move(profile))
         {}
 
+        /** The top at @p y (at the nearer end of the profile's range
+         *  outside it, where rounding puts a side face's points). */
         double
         top(const double y) const
         {
-          return std::sqrt(radius * radius - y * y) - radius;
+          return profile->z(std::min(std::max(y, profile->y_min()), profile->y_max()));
         }
 
         Point<dim>
@@ -56,12 +63,12 @@ namespace WheelRail
         std::unique_ptr<Manifold<dim>>
         clone() const override
         {
-          return std::make_unique<RailChart>(height, radius);
+          return std::make_unique<RailChart>(height, profile);
         }
 
       private:
-        const double height;
-        const double radius;
+        const double                              height;
+        const std::shared_ptr<const ProfileCurve> profile;
       };
     } // namespace internal
   }   // namespace Geometry

@@ -12,11 +12,13 @@
 #include <deal.II/distributed/tria.h>
 
 #include <wheelrail/geometry/interface.h>
+#include <wheelrail/geometry/wheel_rail_shape.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <vector>
 
 namespace WheelRail
 {
@@ -85,8 +87,19 @@ namespace WheelRail
       {
         bool     has_zone = false;
         ChartBox zone;
-        bool     has_path = false;
-        ChartBox path;
+        /** The zone moved across to each further rigid contact point. */
+        std::vector<ChartBox> further_zones;
+        bool                  has_path = false;
+        ChartBox              path;
+
+        /** The zone and the further zones. */
+        std::vector<ChartBox>
+        zones() const
+        {
+          std::vector<ChartBox> all = {zone};
+          all.insert(all.end(), further_zones.begin(), further_zones.end());
+          return all;
+        }
       };
 
 
@@ -94,7 +107,9 @@ namespace WheelRail
       /** The solution zone and the rolling path of body @p material in chart
        *  space (none for the bar and the block on plate). */
       RefinementBoxes
-      refinement_boxes(const GeometryParameters &p, const types::material_id material);
+      refinement_boxes(const GeometryParameters &p,
+                       const WheelRailShape     &shape,
+                       const types::material_id  material);
 
 
 
@@ -105,6 +120,7 @@ namespace WheelRail
        */
       void
       refine_wheel_and_rail(const GeometryParameters                  &p,
+                            const WheelRailShape                      &shape,
                             parallel::distributed::Triangulation<dim> &triangulation);
 
 
@@ -115,6 +131,7 @@ namespace WheelRail
        *  Collective over the triangulation's communicator. */
       ZoneCells
       zone_cells(const GeometryParameters                        &p,
+                 const WheelRailShape                            &shape,
                  const types::material_id                         material,
                  const parallel::distributed::Triangulation<dim> &triangulation);
     } // namespace internal

@@ -161,6 +161,8 @@ namespace WheelRail
     std::vector<unsigned int> block_cells;
     double                    block_x;
     double                    block_gap;
+    /** Directory of the case file: relative file names are read from it. */
+    std::string input_directory;
 
     /** Height of the undeformed wheel centre above O. */
     double
