@@ -132,17 +132,18 @@ namespace WheelRail
         return true;
       }
 
-      /** Throws unless `file` names a readable regular file. */
+      /** Throws unless @p path names a readable regular file (named
+       *  c.file in the messages). */
       void
-      check_file(const FileContext &c)
+      check_file(const std::string &path, const FileContext &c)
       {
         namespace fs = std::filesystem;
         std::error_code error;
-        if (c.file.empty())
+        if (path.empty())
           throw_profile_error("(no file)", 0, "no profile file given", c.parameter);
-        if (fs::is_directory(c.file, error))
+        if (fs::is_directory(path, error))
           throw_profile_error(c.file, 0, "is a directory, not a profile file", c.parameter);
-        if (!fs::exists(c.file, error))
+        if (!fs::exists(path, error))
           throw_profile_error(c.file, 0, "no such file", c.parameter);
       }
     } // namespace
@@ -152,11 +153,12 @@ namespace WheelRail
     std::shared_ptr<SplineProfile>
     SplineProfile::read(const std::string &filename, const ProfileReadOptions &options)
     {
-      const FileContext c{filename, options.parameter};
-      check_file(c);
+      const std::string &shown = options.name.empty() ? filename : options.name;
+      const FileContext  c{shown, options.parameter};
+      check_file(filename, c);
       std::ifstream in(filename);
       if (!in)
-        throw_profile_error(filename, 0, "cannot be opened for reading", options.parameter);
+        throw_profile_error(shown, 0, "cannot be opened for reading", options.parameter);
 
       std::vector<internal::ProfilePoint> points;
       std::string                         text;
@@ -171,13 +173,13 @@ namespace WheelRail
           content_seen = true;
         }
       if (in.bad())
-        throw_profile_error(filename, 0, "could not be read to its end", options.parameter);
+        throw_profile_error(shown, 0, "could not be read to its end", options.parameter);
       if (points.empty())
-        throw_profile_error(filename,
+        throw_profile_error(shown,
                             0,
                             "contains no points (two columns y z in mm)",
                             options.parameter);
-      return build(std::move(points), options, filename);
+      return build(std::move(points), options, shown);
     }
   } // namespace Geometry
 } // namespace WheelRail

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -238,6 +239,7 @@ namespace WheelRail
         profiles.rail_inclination > 0 ? -std::atan(1. / profiles.rail_inclination) : 0.;
       ProfileReadOptions rail_options;
       rail_options.parameter           = "Geometry/Profiles/Rail profile file";
+      rail_options.name                = profiles.rail_file;
       rail_options.smoothing_tolerance = profiles.smoothing_tolerance;
       rail_options.rotation            = angle;
       rail_options.y_from              = profiles.rail_window_centre - 0.5 * p.rail_head_width;
@@ -258,6 +260,7 @@ namespace WheelRail
       const double       shift = profiles.taping_line_position - profiles.lateral_shift;
       ProfileReadOptions wheel_options;
       wheel_options.parameter           = "Geometry/Profiles/Wheel profile file";
+      wheel_options.name                = profiles.wheel_file;
       wheel_options.smoothing_tolerance = profiles.smoothing_tolerance;
       wheel_options.shift_y             = shift;
       wheel_options.y_from      = shift + profiles.wheel_window_centre - 0.5 * p.tread_width;
@@ -269,8 +272,12 @@ namespace WheelRail
       else
         wheel_r = std::make_shared<FlatProfile>(wheel_options.y_from, wheel_options.y_to);
 
+      const bool overlap =
+        std::max(wheel_r->y_min(), rail_r->y_min()) < std::min(wheel_r->y_max(), rail_r->y_max());
       const std::vector<ProfileContactPoint> found =
-        rigid_contact(*wheel_r, *rail_r, p.wheel_radius, profiles.second_contact_tolerance);
+        overlap ?
+          rigid_contact(*wheel_r, *rail_r, p.wheel_radius, profiles.second_contact_tolerance) :
+          std::vector<ProfileContactPoint>();
       AssertThrow(!found.empty(),
                   ExcMessage(
                     "The wheel profile (Geometry/Profiles/Wheel profile file, window " +
@@ -341,12 +348,20 @@ namespace WheelRail
     {
       std::ostringstream s;
       s << summary;
+      // fixed decimals: the search's rounding (1e-12 m) stays out of print
+      const auto fixed = [](const double value, const int digits) {
+        const double       scale = std::pow(10., digits);
+        std::ostringstream out;
+        out << std::fixed << std::setprecision(digits)
+            << std::round(value * scale) / scale + 0.; // no "-0.000"
+        return out.str();
+      };
       for (const RigidContact &c : points)
-        s << (s.tellp() > 0 ? "\n" : "") << "  contact point at y " << fmt(1e3 * c.y, 4)
-          << " mm, separation " << fmt(1e3 * c.separation, 3) << " mm, contact angle "
-          << fmt(c.contact_angle * 180 / M_PI, 3) << " deg, rolling radius "
-          << fmt(1e3 * c.rolling_radius, 6) << " mm, radius across "
-          << fmt(1e3 * c.radius_across, 4) << " mm";
+        s << "\n  contact point at y " << fixed(1e3 * c.y, 3) << " mm, separation "
+          << fixed(1e3 * c.separation, 4) << " mm, contact angle "
+          << fixed(c.contact_angle * 180 / M_PI, 3) << " deg, rolling radius "
+          << fixed(1e3 * c.rolling_radius, 3) << " mm, radius across "
+          << fixed(1e3 * c.radius_across, 1) << " mm";
       return s.str();
     }
   } // namespace Geometry

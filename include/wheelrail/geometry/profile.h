@@ -131,6 +131,9 @@ namespace WheelRail
     {
       /** The parameter entry that named the file, for the messages. */
       std::string parameter;
+      /** The file's name in the messages and the description, as the user
+       *  gave it (the path read where empty). */
+      std::string name;
       /** RMS deviation [m] of the smoothing spline from the points; 0: interpolation. */
       double smoothing_tolerance = 0;
       /** The window [m] that is modelled; NaN: unbounded on that side. */
