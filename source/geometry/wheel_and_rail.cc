@@ -353,7 +353,7 @@ namespace WheelRail
       wheel_and_rail(const GeometryParameters &parameters, ParameterHandler &prm)
       {
         ProfileParameters profiles;
-        profiles.parse_parameters(prm, parameters.input_directory);
+        profiles.parse_parameters(prm, parameters);
         return std::make_unique<WheelAndRail>(parameters, profiles);
       }
 

@@ -121,15 +121,17 @@ namespace WheelRail
                         "start comments): y lateral from the taping line towards the "
                         "flange, z up from the nominal rolling circle (the flange has "
                         "z < 0); the wheel is the profile revolved about the axle, its "
-                        "radius Geometry/Wheel/Radius - z. Relative to the directory of "
-                        "the case file. Empty: a cylindrical tread of Geometry/Wheel/Radius. "
-                        "Shipped: mesh/profiles/ (mesh/README.md).");
+                        "radius Geometry/Wheel/Radius - z. A relative name is read from the "
+                        "directory of the parameter file that sets it (as an include). "
+                        "Empty: a cylindrical tread of Geometry/Wheel/Radius. Shipped: "
+                        "mesh/profiles/ (mesh/profiles/README.md).");
       prm.declare_entry("Rail profile file",
                         "",
                         Patterns::Anything(),
                         "Rail head profile, two columns y z in mm: y lateral from the "
                         "rail's centre line towards the gauge side, z up from the top of "
-                        "the upright head. Relative to the directory of the case file. "
+                        "the upright head, inclined by Rail inclination. A relative name is "
+                        "read from the directory of the parameter file that sets it. "
                         "Empty: the circular crown of Geometry/Rail/Profile radius.");
       prm.declare_entry("Wheel window centre",
                         "0",
@@ -183,7 +185,7 @@ namespace WheelRail
 
 
     void
-    ProfileParameters::parse_parameters(ParameterHandler &prm, const std::string &directory)
+    ProfileParameters::parse_parameters(ParameterHandler &prm, const GeometryParameters &geometry)
     {
       prm.enter_subsection("Geometry");
       prm.enter_subsection("Profiles");
@@ -198,8 +200,12 @@ namespace WheelRail
       second_contact_tolerance = prm.get_double("Second contact tolerance");
       prm.leave_subsection();
       prm.leave_subsection();
-      wheel_path = resolve(wheel_file, directory);
-      rail_path  = resolve(rail_file, directory);
+      const auto directory = [&](const std::string &entry) {
+        return geometry.file_directory ? geometry.file_directory("Geometry/Profiles", entry) :
+                                         std::string();
+      };
+      wheel_path = resolve(wheel_file, directory("Wheel profile file"));
+      rail_path  = resolve(rail_file, directory("Rail profile file"));
       AssertThrow(rail_inclination == 0 || rail_inclination >= 5,
                   ExcMessage("Geometry/Profiles/Rail inclination = " + fmt(rail_inclination) +
                              " would incline the rail 1:" + fmt(rail_inclination) +

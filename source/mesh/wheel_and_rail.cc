@@ -167,18 +167,15 @@ namespace WheelRail
         const double     R      = shape.rolling_radius();
         const Point<dim> centre = shape.wheel_centre();
         const double     w = p.zone_half_width, turn = 2 * M_PI * R;
-        // on a revolved profile, cells that refine onto at most h_min over
-        // the zones (the contact points' included)
-        double y_lo = -w - 2 * p.h_min, y_hi = w + 2 * p.h_min;
-        for (const RigidContact &c : shape.contacts())
-          {
-            y_lo = std::min(y_lo, c.y - w - 2 * p.h_min);
-            y_hi = std::max(y_hi, c.y + w + 2 * p.h_min);
-          }
+        // the zones of every contact point; on a revolved profile, cells
+        // that refine onto at most h_min over them
+        const auto [zone_lo, zone_hi] = shape.zone_span(w);
         const double hw =
           shape.cylindrical_wheel() ?
             4 * coarse :
-            4 * coarse / tread_stretch(shape, p.bore_radius, y_lo, y_hi) * (1 - 1e-9);
+            4 * coarse /
+              tread_stretch(shape, p.bore_radius, zone_lo - 2 * p.h_min, zone_hi + 2 * p.h_min) *
+              (1 - 1e-9);
         const double        sO = -p.wheel_centre_x;
         std::vector<double> s  = aligned_lines(sO - 0.5 * p.zone_length - 0.5 * turn,
                                               sO - 0.5 * p.zone_length + 0.5 * turn,
@@ -190,7 +187,7 @@ namespace WheelRail
         // rail's lines): symmetric about y = 0, at +-h_min / 2, ...
         const double              shift = 0.5 * p.h_min;
         const std::vector<double> y =
-          aligned_lines(shape.wheel_y_lo, shape.wheel_y_hi, -w + shift, w + shift, hw);
+          aligned_lines(shape.wheel_y_lo, shape.wheel_y_hi, zone_lo + shift, zone_hi + shift, hw);
         // radii: the top layer hw thick over the zone's depth, then
         // geometric layers of about square cells down to the bore
         std::vector<double> r     = {R};
@@ -268,10 +265,13 @@ namespace WheelRail
         // on the curved top a lateral edge is longer than its chart
         // length (slope s at the aligned block's sides): cells of
         // coarse / sqrt(1 + s^2) refine onto at most h_min there
-        const double        w     = p.zone_half_width;
-        const unsigned int  n_w   = std::max(1., std::ceil(2 * w / coarse - 1e-9));
-        const double        right = std::min(0.5 * n_w * coarse, shape.rail_y_hi);
-        const double        left  = std::max(-0.5 * n_w * coarse, shape.rail_y_lo);
+        const double w = p.zone_half_width;
+        // over the zones of every contact point
+        const auto [zone_lo, zone_hi] = shape.zone_span(w);
+        const double        middle    = 0.5 * (zone_lo + zone_hi);
+        const unsigned int  n_w   = std::max(1., std::ceil((zone_hi - zone_lo) / coarse - 1e-9));
+        const double        right = std::min(middle + 0.5 * n_w * coarse, shape.rail_y_hi);
+        const double        left  = std::max(middle - 0.5 * n_w * coarse, shape.rail_y_lo);
         const ProfileCurve &top   = *shape.rail_curve();
         const double        slope = std::max(std::abs(top.slope(left)), std::abs(top.slope(right)));
         // and a vertical edge is longer by (H + z_top) / H where the top
@@ -292,7 +292,8 @@ namespace WheelRail
         // that the offsets run through a whole cell every 25 nodes.
         const std::vector<double> x = aligned_lines(
           p.rail_start_x, p.rail_end_x, -0.5 * p.zone_length, 0.5 * p.zone_length, 0.96 * h);
-        const std::vector<double> y = aligned_lines(shape.rail_y_lo, shape.rail_y_hi, -w, w, h);
+        const std::vector<double> y =
+          aligned_lines(shape.rail_y_lo, shape.rail_y_hi, zone_lo, zone_hi, h);
         const std::vector<double> z = aligned_lines(-p.rail_head_height, 0, -p.zone_depth, 0, h);
         add_block(
           x.size() - 1,

@@ -510,10 +510,43 @@ namespace WheelRail
 
 
 
-    void
+    std::string
+    ExpandedText::directory_of(const std::string &section, const std::string &entry) const
+    {
+      std::string              file = top;
+      std::string              path; // the open subsections, "A/B"
+      std::vector<std::string> sections;
+      std::istringstream       lines(expanded);
+      unsigned int             index = 0;
+      for (std::string line; std::getline(lines, line); ++index)
+        {
+          const std::string s       = statement(line);
+          const std::string opened  = after_keyword(s, "subsection ");
+          const std::string setting = after_keyword(s, "set ");
+          if (!opened.empty() || ((s == "end" || s == "END") && !sections.empty()))
+            {
+              if (!opened.empty())
+                sections.push_back(opened);
+              else
+                sections.pop_back();
+              path.clear();
+              for (const std::string &name : sections)
+                path += (path.empty() ? "" : "/") + name;
+            }
+          else if (!setting.empty() && setting.find('=') != std::string::npos &&
+                   Utilities::trim(setting.substr(0, setting.find('='))) == entry &&
+                   path == section)
+            file = origin[index].first;
+        }
+      return std::filesystem::path(file).parent_path().string();
+    }
+
+
+
+    ExpandedText
     parse(ParameterHandler &prm, const std::string &filename)
     {
-      const ExpandedText file(filename);
+      ExpandedText       file(filename);
       std::istringstream text(file.text());
       try
         {
@@ -533,6 +566,7 @@ namespace WheelRail
             message.insert(at, ">");
           AssertThrow(false, ExcMessage(message));
         }
+      return file;
     }
   } // namespace ParameterFile
 } // namespace WheelRail

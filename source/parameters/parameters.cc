@@ -39,10 +39,12 @@ namespace WheelRail
   void
   Parameters::parse(ParameterHandler &prm, const std::string &filename)
   {
-    ParameterFile::parse(prm, filename);
+    const ParameterFile::ExpandedText text = ParameterFile::parse(prm, filename);
     problem.parse_parameters(prm);
     geometry.parse_parameters(prm);
-    geometry.input_directory = std::filesystem::path(filename).parent_path().string();
+    geometry.file_directory = [text](const std::string &section, const std::string &entry) {
+      return text.directory_of(section, entry);
+    };
     geometry_model = Geometry::GeometryModel::create(problem.geometry, geometry, prm);
     material.parse_parameters(prm);
     solver.parse_parameters(prm);

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace WheelRail
@@ -41,7 +42,7 @@ namespace WheelRail
     struct ProfileParameters
     {
       /** Profile files as given, and as read (relative to the directory of
-       *  the case file); empty: the analytic shape. */
+       *  the parameter file that names them); empty: the analytic shape. */
       std::string wheel_file, rail_file;
       std::string wheel_path, rail_path;
       /** Middle of the modelled tread and head, in the files' frames [m]. */
@@ -62,10 +63,10 @@ namespace WheelRail
 
       static void
       declare_parameters(ParameterHandler &prm);
-      /** Read the entries; relative file names are taken relative to
-       *  @p directory. */
+      /** Read the entries; a relative file name is read from the directory
+       *  of the parameter file that set it (@p geometry's file_directory). */
       void
-      parse_parameters(ParameterHandler &prm, const std::string &directory);
+      parse_parameters(ParameterHandler &prm, const GeometryParameters &geometry);
       /** Whether a profile file is given. */
       bool
       from_files() const
@@ -80,10 +81,13 @@ namespace WheelRail
      *  frame. */
     struct RigidContact
     {
-      double y;              ///< lateral position [m]
-      double z;              ///< height of the rail top there [m]
-      double separation;     ///< distance before any load [m] (0: the main point)
-      double contact_angle;  ///< angle of the rail's normal from z [rad]
+      double y;          ///< lateral position [m]
+      double z;          ///< height of the rail top there [m]
+      double separation; ///< distance before any load [m] (0: the main point)
+      /** atan of the rail top's slope dz/dy there [rad]: the rail's outer
+       *  normal is (0, -sin, cos) of it (negative where the normal leans
+       *  towards +y, the gauge side: flange-root contact). */
+      double contact_angle;
       double rolling_radius; ///< the wheel's radius there [m]
       /** Radius of relative curvature across, 1 / (z_w'' - z_r'') [m]
        *  (infinite where the profiles are conformal). */
@@ -167,6 +171,20 @@ namespace WheelRail
       contacts() const
       {
         return points;
+      }
+
+      /** The lateral span of the zones of half width @p w about every
+       *  contact point: [min y - w, max y + w] [m]. */
+      std::pair<double, double>
+      zone_span(const double w) const
+      {
+        double lo = points.front().y - w, hi = points.front().y + w;
+        for (const RigidContact &c : points)
+          {
+            lo = std::min(lo, c.y - w);
+            hi = std::max(hi, c.y + w);
+          }
+        return {lo, hi};
       }
 
       /** What the profiles are, for the run's summary. */

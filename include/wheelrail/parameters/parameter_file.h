@@ -59,6 +59,15 @@ namespace WheelRail
       }
 
       /**
+       * The directory of the file whose line sets @p entry in subsection
+       * @p section ("Geometry/Profiles"), the last such line winning; the
+       * directory of the file read where no line sets it. A file name
+       * given by an entry is read relative to it, as an include is.
+       */
+      std::string
+      directory_of(const std::string &section, const std::string &entry) const;
+
+      /**
        * @p message with every "Line <N> of file <TOP" of the expanded text
        * replaced by the file and line that line came from.
        */
@@ -102,7 +111,7 @@ namespace WheelRail
      * Reads @p filename with its includes into @p prm; a parser error is
      * rethrown with the file and line it comes from.
      */
-    void
+    ExpandedText
     parse(dealii::ParameterHandler &prm, const std::string &filename);
   } // namespace ParameterFile
 } // namespace WheelRail

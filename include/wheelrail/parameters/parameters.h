@@ -19,6 +19,7 @@
 #include <wheelrail/parameters/selection.h>
 #include <wheelrail/postprocess/registry.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -161,8 +162,9 @@ namespace WheelRail
     std::vector<unsigned int> block_cells;
     double                    block_x;
     double                    block_gap;
-    /** Directory of the case file: relative file names are read from it. */
-    std::string input_directory;
+    /** The directory a relative file name given by @p entry of subsection
+     *  @p section is read from: that of the parameter file that set it. */
+    std::function<std::string(const std::string &section, const std::string &entry)> file_directory;
 
     /** Height of the undeformed wheel centre above O. */
     double
