@@ -133,18 +133,45 @@ namespace WheelRail
                         "the upright head, inclined by Rail inclination. A relative name is "
                         "read from the directory of the parameter file that sets it. "
                         "Empty: the circular crown of Geometry/Rail/Profile radius.");
+      prm.declare_entry("Wheel profile flip y",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether the wheel file's y runs the other way (towards the field "
+                        "side): the file is mirrored y -> -y before anything else.");
+      prm.declare_entry("Wheel profile z down",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether the wheel file's z points down (into the rail), as in "
+                        "CONTACT's profile files: z -> -z on reading.");
+      prm.declare_entry("Wheel profile taping line",
+                        "0",
+                        Patterns::Double(-0.2, 0.2),
+                        "The taping line's y in the wheel file, as written [m], range "
+                        "[-0.2, 0.2] (e.g. 0.07 for a file whose y = 0 is the flange back "
+                        "of a wheel with the taping line 70 mm from it): the profile is "
+                        "moved so that the taping line is its y = 0.");
+      prm.declare_entry("Rail profile flip y",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether the rail file's y runs towards the field side: mirrored "
+                        "y -> -y on reading. The file's (0, 0) must be the top of the head "
+                        "on its centre line (the point the inclination turns it about).");
+      prm.declare_entry("Rail profile z down",
+                        "false",
+                        Patterns::Bool(),
+                        "Whether the rail file's z points down: z -> -z on reading.");
       prm.declare_entry("Wheel window centre",
                         "0",
                         Patterns::Double(-0.2, 0.2),
-                        "Lateral coordinate, in the wheel profile's frame, of the middle "
-                        "of the modelled tread, which is Geometry/Wheel/Tread width wide "
-                        "[m], range [-0.2, 0.2].");
+                        "Middle of the modelled tread, which is Geometry/Wheel/Tread width "
+                        "wide, from the taping line towards the flange [m], range "
+                        "[-0.2, 0.2].");
       prm.declare_entry("Rail window centre",
                         "0",
                         Patterns::Double(-0.2, 0.2),
-                        "Lateral coordinate, in the rail profile's frame, of the middle "
-                        "of the modelled head, which is Geometry/Rail/Head width wide [m], "
-                        "range [-0.2, 0.2].");
+                        "Middle of the modelled head, which is Geometry/Rail/Head width "
+                        "wide, from the head's centre line towards the gauge side (before "
+                        "the inclination) [m], range [-0.2, 0.2].");
       prm.declare_entry("Rail inclination",
                         "0",
                         Patterns::Double(0, 1000),
@@ -191,6 +218,11 @@ namespace WheelRail
       prm.enter_subsection("Profiles");
       wheel_file               = prm.get("Wheel profile file");
       rail_file                = prm.get("Rail profile file");
+      wheel_flip_y             = prm.get_bool("Wheel profile flip y");
+      wheel_z_down             = prm.get_bool("Wheel profile z down");
+      wheel_taping_line        = prm.get_double("Wheel profile taping line");
+      rail_flip_y              = prm.get_bool("Rail profile flip y");
+      rail_z_down              = prm.get_bool("Rail profile z down");
       wheel_window_centre      = prm.get_double("Wheel window centre");
       rail_window_centre       = prm.get_double("Rail window centre");
       rail_inclination         = prm.get_double("Rail inclination");
@@ -248,6 +280,8 @@ namespace WheelRail
       rail_options.name                = profiles.rail_file;
       rail_options.smoothing_tolerance = profiles.smoothing_tolerance;
       rail_options.rotation            = angle;
+      rail_options.mirror              = profiles.rail_flip_y;
+      rail_options.z_down              = profiles.rail_z_down;
       rail_options.y_from              = profiles.rail_window_centre - 0.5 * p.rail_head_width;
       rail_options.y_to                = profiles.rail_window_centre + 0.5 * p.rail_head_width;
       rail_options.max_spacing         = max_spacing_in_cells * p.h_min;
@@ -263,14 +297,20 @@ namespace WheelRail
 
       // y_w > 0 brings this wheel's flange towards its rail's gauge face:
       // the wheel moves towards the rail's field side (-y)
-      const double       shift = profiles.taping_line_position - profiles.lateral_shift;
+      // the file's taping line (mirrored with the file) onto y = 0 first
+      const double taping_line =
+        profiles.wheel_flip_y ? -profiles.wheel_taping_line : profiles.wheel_taping_line;
+      const double shift = profiles.taping_line_position - profiles.lateral_shift - taping_line;
       ProfileReadOptions wheel_options;
       wheel_options.parameter           = "Geometry/Profiles/Wheel profile file";
       wheel_options.name                = profiles.wheel_file;
       wheel_options.smoothing_tolerance = profiles.smoothing_tolerance;
       wheel_options.shift_y             = shift;
-      wheel_options.y_from      = shift + profiles.wheel_window_centre - 0.5 * p.tread_width;
-      wheel_options.y_to        = shift + profiles.wheel_window_centre + 0.5 * p.tread_width;
+      wheel_options.mirror              = profiles.wheel_flip_y;
+      wheel_options.z_down              = profiles.wheel_z_down;
+      wheel_options.y_from =
+        shift + taping_line + profiles.wheel_window_centre - 0.5 * p.tread_width;
+      wheel_options.y_to = shift + taping_line + profiles.wheel_window_centre + 0.5 * p.tread_width;
       wheel_options.max_spacing = max_spacing_in_cells * p.h_min;
       std::shared_ptr<const ProfileCurve> wheel_r;
       if (!profiles.wheel_path.empty())

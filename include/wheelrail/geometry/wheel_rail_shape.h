@@ -45,7 +45,12 @@ namespace WheelRail
        *  the parameter file that names them); empty: the analytic shape. */
       std::string wheel_file, rail_file;
       std::string wheel_path, rail_path;
-      /** Middle of the modelled tread and head, in the files' frames [m]. */
+      /** How the files are written: y mirrored, z down; the taping line's
+       *  y in the wheel file [m]. */
+      bool   wheel_flip_y, wheel_z_down, rail_flip_y, rail_z_down;
+      double wheel_taping_line;
+      /** Middle of the modelled tread (from the taping line, towards the
+       *  flange) and head (from the centre line, towards the gauge side) [m]. */
       double wheel_window_centre;
       double rail_window_centre;
       /** Rail inclination 1:N as N [-]; 0: upright. */
