@@ -351,7 +351,7 @@ namespace WheelRail
           points.push_back({y,
                             rail->z(y),
                             c.separation,
-                            std::atan(rail_r->slope(c.y)),
+                            std::atan(-rail_r->slope(c.y)),
                             wheel_radius(y),
                             across > 0 ? 1 / (across * std::pow(cos_d, 3)) :
                                          std::numeric_limits<double>::infinity()});

@@ -89,9 +89,10 @@ namespace WheelRail
       double y;          ///< lateral position [m]
       double z;          ///< height of the rail top there [m]
       double separation; ///< distance before any load [m] (0: the main point)
-      /** atan of the rail top's slope dz/dy there [rad]: the rail's outer
-       *  normal is (0, -sin, cos) of it (negative where the normal leans
-       *  towards +y, the gauge side: flange-root contact). */
+      /** Contact angle delta [rad], -atan of the rail top's slope dz/dy
+       *  there: the rail's outer normal is (0, sin delta, cos delta),
+       *  delta > 0 leaning towards +y, the gauge side (flange-root contact
+       *  21 deg for S1002 on 60E1 1:40 at y_w = 6 mm). */
       double contact_angle;
       double rolling_radius; ///< the wheel's radius there [m]
       /** Radius of relative curvature across, 1 / (z_w'' - z_r'') [m]
