@@ -8,6 +8,7 @@ Files (two columns y z in mm, '#' header lines; mesh/profiles/README.md):
     60e1.txt        60E1 rail head top (EN 13674-1), R300/R80/R13 and the 1:20 flanks
     cylinder.txt    the paper's idealised wheel: flat tread z = 0, |y| <= 35 mm
     crown_r300.txt  the paper's idealised rail: circular crown R 300 mm, |y| <= 35 mm
+    cone_phi005.txt, cone_phi02.txt  coned treads for spin 0.05 and 0.2 1/m on it
 
 Conventions. Rail: y = 0 on the rail's centre line, z = 0 at the top of the
 (uninclined) head, y positive towards the gauge side (track centre), z up.
@@ -263,6 +264,27 @@ def crown_points(R=300.0):
     return np.column_stack((y, np.sqrt(R * R - y * y) - R))
 
 
+# Coned treads for spin without lateral creepage on the R300 crown: free
+# rolling on a cone of half-angle gamma (radius growing towards the flange)
+# gives the spin phi = sin(gamma) / r at the contact, no lateral creepage.
+CONE_SPINS = (0.05, 0.2)     # phi [1/m] at the nominal radius R0
+CONE_R0 = 460.0              # [mm]
+
+
+def cone_angle(phi, r0=CONE_R0):
+    """Half-angle [rad] of the cone whose spin at radius r0 [mm] is phi [1/m]."""
+    return math.asin(phi * r0 * 1e-3)
+
+
+def cone_points(phi):
+    y = np.linspace(-35.0, 35.0, int(round(70.0 / IDEAL_STEP)) + 1)
+    return np.column_stack((y, -y * math.tan(cone_angle(phi))))
+
+
+def _cone_name(phi):
+    return "cone_phi%s.txt" % ("%g" % phi).replace("0.", "0")
+
+
 # --- the files --------------------------------------------------------------
 RAIL_CONV = [
     "columns: y z [mm]; z up",
@@ -336,6 +358,13 @@ def file_texts():
             "the paper's idealised rail: a circular crown of radius 300 mm over",
             "  |y| <= 35 mm, z = sqrt(300^2 - y^2) - 300",
         ] + RAIL_CONV + ["points every %.2f mm" % IDEAL_STEP, GENERATOR], crown_points()),
+        **{_cone_name(phi): _format([
+            "a coned tread for spin without lateral creepage on the R300 crown: half-angle",
+            "  gamma = asin(phi R0) = %.6f deg for phi = %g 1/m at R0 = %g mm (the spin" %
+            (math.degrees(cone_angle(phi)), phi, CONE_R0),
+            "  sin(gamma) / r at the contact, r = R0 - z there), z = -y tan(gamma)",
+        ] + WHEEL_CONV + ["points every %.2f mm" % IDEAL_STEP, GENERATOR], cone_points(phi))
+           for phi in CONE_SPINS},
     }
 
 
@@ -453,6 +482,12 @@ def check(directory):
     p = _read_points(texts["crown_r300.txt"])
     (cy, cz), R = _circle_fit(p)
     c.value("crown_r300 radius fitted to its points", R, 300.0, 1e-3)
+
+    for phi in CONE_SPINS:
+        p = _read_points(texts[_cone_name(phi)])
+        slope = np.polyfit(p[:, 0], p[:, 1], 1)[0]
+        c.value("%s: spin sin(atan(-slope)) / R0 [1/m]" % _cone_name(phi),
+                math.sin(math.atan(-slope)) / (CONE_R0 * 1e-3), phi, 1e-6, unit="1/m")
 
     print("files in %s:" % directory)
     for name, text in texts.items():
