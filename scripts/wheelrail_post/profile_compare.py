@@ -117,6 +117,17 @@ def compare_run(run, instant="t", case_dir=None, grid=pr.DEFAULT_GRID, log=None,
                 seconds=time.time() - t0)
 
 
+def find_log(run):
+    """The run's printed output if it lies where the tests and ./run.sh put it:
+    RUN/wheelrail.log, RUN.log, or wheelrail.log beside RUN; else None."""
+    run = os.path.normpath(run)
+    for cand in (os.path.join(run, "wheelrail.log"), run + ".log",
+                 os.path.join(os.path.dirname(run), "wheelrail.log")):
+        if os.path.exists(cand):
+            return cand
+    return None
+
+
 def as_comparison(run, instant="t", grid=pr.DEFAULT_GRID):
     """compare_run's result in the shape of compare.compare_patch's (what
     plot.py and the report page read): the main patch's solution along its
@@ -125,8 +136,7 @@ def as_comparison(run, instant="t", grid=pr.DEFAULT_GRID):
     'profile' the full result. Needs a run with friction (compare.law_of)."""
     prm = hc.read_parameters(run)
     hc.law_of(prm)  # a frictionless run: ValueError, as for the Hertzian case
-    log = os.path.normpath(run) + ".log"
-    r = compare_run(run, instant, None, grid, log if os.path.exists(log) else None)
+    r = compare_run(run, instant, None, grid, find_log(run))
     if r is None:
         return None
     P, patch = r["P"], r["ref"]["patches"][0]
@@ -301,7 +311,7 @@ def main(argv=None):
                     " current directory, then the run directory's parent)")
     ap.add_argument("--log", default=None,
                     help="the run's printed output, to check the contact points against (default: "
-                    "RUN/wheelrail.log or RUN.log if present)")
+                    "RUN/wheelrail.log, RUN.log or wheelrail.log beside RUN, if present)")
     ap.add_argument("--grid", default="%dx%d" % pr.DEFAULT_GRID, help="reference grid NXxNY (32x33)")
     ap.add_argument("--load", type=float, default=None,
                     help="vertical wheel load [N] (default: the statistics' F_N at the instant)")
@@ -312,12 +322,7 @@ def main(argv=None):
     if grid is None:
         print("profile_reference.py: error: --grid: NXxNY, 4 <= NX <= 512, NY odd", file=sys.stderr)
         return 2
-    log = a.log
-    if log is None:
-        for cand in (os.path.join(a.run, "wheelrail.log"), os.path.normpath(a.run) + ".log"):
-            if os.path.exists(cand):
-                log = cand
-                break
+    log = a.log if a.log is not None else find_log(a.run)
     try:
         r = compare_run(a.run, a.instant, a.case_dir, grid, log, a.load)
     except (pr.ReferenceError, ValueError, KeyError, OSError) as e:
