@@ -28,6 +28,7 @@ grep -A3 "^Profiles" wheelrail.log
 
 PYTHONPATH="$src/scripts" SRC="$src" /usr/bin/python3 - <<'PY'
 import math, os, sys
+import numpy as np
 from wheelrail_post import bem, halfspace as hs, profiles as pf, profile_reference as pr
 from wheelrail_post import profile_compare as pc
 
@@ -48,7 +49,7 @@ pair = pf.Pair(pf.read_profile(os.path.join(prof, "cylinder.txt")),
 load, E, nu = 140.3e3, 2.1e11, 0.3
 patch = pr.normal_reference(pair, pf.contact_points(pair, tol=1e-9), load, E, nu, (32, 33))[0]
 g = patch["grid"]
-a, b = hs.semi_axes(g, patch["p"], *pr.np.meshgrid(g.x, g.y, indexing="ij"))
+a, b = hs.semi_axes(g, patch["p"], *np.meshgrid(g.x, g.y, indexing="ij"))
 hz = bem.hertz_elliptic(load, 0.46, 0.30, hs.moduli(E, nu)[0])
 check("cylinder on crown R300 from files: a / a_Hertz - 1", a / hz["a"] - 1, 0.005)
 check("b / b_Hertz - 1", b / hz["b"] - 1, 0.005)
