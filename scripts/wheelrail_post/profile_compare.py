@@ -11,10 +11,12 @@ contact goes to the patch whose point is nearest in s.
 
 Compared per patch: area, length (x extent), width (s extent), p_max,
 F_N, F_x / F_N and the slip-area fraction (FE: eq. 5 on the slave nodes,
-as compare.patch_totals; reference: the elements in slip). Extents are those
-of the nodes / elements in contact with one node spacing / element added
-(each node and element stands for a cell of that size), so both are
-quantised: the FE's to its node spacing h, the reference's to its element.
+as compare.patch_totals; reference: the elements in slip). Area and extents
+count the nodes / elements with p >= P_SHARE p_max (5 %: the penalty
+contact gives nodes beyond the patch's edge, touching master faces, a few
+per cent of p_max), one node spacing / element added to the extents (each
+node and element stands for a cell of that size), so both are quantised:
+the FE's to its node spacing h, the reference's to its element.
 An FE patch whose contact reaches the outermost rows of the patch file was
 clipped by the solution zone (Geometry/Mesh/Solution zone half width): its
 width, area and load are then lower bounds, flagged 'clipped'.
@@ -60,9 +62,11 @@ def fe_patches(P, ref):
         fn = float(P["F_n"][m].sum())
         fx = float((P["shear_x"][m] * P["area"][m]).sum())
         slip = m & (P["adhesion_eq5"] == 0)
-        out.append(dict(area=float(P["area"][m].sum()), length=np.ptp(P["x"][m]) + hx,
-                        width=(np.ptp(P["y"][m]) + hy) / math.cos(c["delta"]),
-                        p_max=float(P["pressure"][m].max()), F_N=fn, fx_fn=fx / fn,
+        pm = float(P["pressure"][m].max())
+        e = m & (P["pressure"] >= pr.P_SHARE * pm)
+        out.append(dict(area=float(P["area"][e].sum()), length=np.ptp(P["x"][e]) + hx,
+                        width=(np.ptp(P["y"][e]) + hy) / math.cos(c["delta"]),
+                        p_max=pm, F_N=fn, fx_fn=fx / fn,
                         slip=float(P["area"][slip].sum() / P["area"][m].sum()),
                         clipped=bool((m & y_edge).any()), nodes=int(m.sum()), h=(hx, hy)))
     return out
@@ -187,9 +191,10 @@ def point_lines(ref):
         lines.append("no log of the run given: the points are not checked against the program's")
     for c in ref["check"] or []:
         lines.append("point %d, profiles.py - program: y %+.4f mm, separation %+.5f mm, angle "
-                     "(as the program's atan(dz/dy)) %+.4f deg, rolling radius %+.4f mm; radius across"
+                     "%+.4f deg (the program's sign: %s), rolling radius %+.4f mm; radius across"
                      " %.1f mm (fit over +-2 mm) vs %.1f mm (program, local)"
-                     % (c["k"], c["dy"] / MM, c["dsep"] / MM, math.degrees(c["dangle"]), c["dr"] / MM,
+                     % (c["k"], c["dy"] / MM, c["dsep"] / MM, math.degrees(c["dangle"]),
+                        "delta" if c["sign"] > 0 else "-delta", c["dr"] / MM,
                         c["across"] / MM, c["across_printed"] / MM))
     if ref["printed"] is not None and len(ref["printed"]) != len(ref["points"]):
         lines.append("the program printed %d points, profiles.py finds %d"
@@ -201,8 +206,11 @@ def summary_lines(r):
     """The comparison as text lines."""
     ref = r["ref"]
     lines = ["profile reference at instant %s (t = %.6g s): vertical load %.2f kN (%s), %s, "
-             "rigid creepage xi at O %.4g" % (r["instant"], r["t"], ref["load"] / 1e3,
+             "the run's creepage (statistics) %.4g" % (r["instant"], r["t"], ref["load"] / 1e3,
                                               ref["load_source"], ref["law"], ref["xi"])]
+    lines.append("wheel angular velocity at t %.6g rad/s: the run's r_eff %.4f mm; with the undeformed"
+                 " rolling radius at O, %.4f mm, xi would be %.4g (not used)" % (ref["omega"], ref["r_eff"] / MM,
+                 ref["points"][0]["r"] / MM, ref["xi_undeformed"]))
     lines += point_lines(ref)
     for k, (patch, f) in enumerate(zip(ref["patches"], r["fe"])):
         if patch["grid"] is None:

@@ -41,9 +41,13 @@ towards +y, the flange side; positive phi is Kalker's, a counter-clockwise
 rotation of the wheel relative to the rail seen from the wheel, rolling3d).
 To first order in s, w_x = xi - phi s: Kalker's spin; the exact radius is
 kept because a merged two-point patch spans radii that a linear term
-misses. eta = 0: the run's wheelset has no lateral velocity and no yaw. xi
-is the run's rigid creepage at instant t (statistics), defined at O; a
-separate group's xi is shifted by -(r_P - r_O) / r_O.
+misses. eta = 0: the run's wheelset has no lateral velocity and no yaw.
+xi at O is the run's creepage at instant t (statistics), (V - omega r_eff) / V
+with the program's effective radius r_eff (printed as "rolling radius" under
+Rolling); a separate group's xi is shifted by -(r_P - r_O) / r_O. r_eff
+differs from the undeformed r_O by up to about 0.15 mm (xi by 3e-4, F_x / F_N
+by about 0.04 on these patches): the xi of the undeformed radius,
+1 - omega r_O / V, is reported beside it.
 """
 import math
 import os
@@ -63,6 +67,10 @@ MERGE_ANGLE = math.radians(5.0)
 # the gap table: x within +-HALF_X, s over the group's points +-HALF_S, steps
 HALF_X, HALF_S, STEP_X, STEP_S = 20 * MM, 22 * MM, 0.25 * MM, 0.1 * MM
 DEFAULT_GRID = (32, 33)
+# the area and extents count the elements (and FE nodes) with at least this
+# share of the patch's p_max: the FE's penalty contact gives edge nodes that
+# touch the master faces a few per cent of it (profile_compare.py)
+P_SHARE = 0.05
 MARGIN = 1.1
 
 
@@ -125,10 +133,16 @@ def printed_points(log):
 
 
 def check_printed(pair, points, printed):
-    """Rows (k, dy, dsep, dangle, dr, across_profiles, across_printed) of the
-    differences profiles.py - program [m, rad]; angle compared as -delta."""
+    """Rows (k, dy, dsep, dangle, dr, across_profiles, across_printed, sign) of
+    the differences profiles.py - program [m, rad]. The program printed its
+    contact angle as atan(dz_rail/dy) = -delta before main's 24c91e7 and as
+    delta since: the sign that fits the printed angles better is taken
+    (sign -1: the former) and reported."""
     rows = []
     y0 = points[0]["y"]
+    pairs = list(zip(points, printed))
+    sign = 1 if sum(abs(c["delta"] - q["angle"]) for c, q in pairs) <= \
+        sum(abs(c["delta"] + q["angle"]) for c, q in pairs) else -1
     for k, (c, q) in enumerate(zip(points, printed)):
         try:
             B = pf.gap_curvatures(pair, c)[1]
@@ -136,8 +150,8 @@ def check_printed(pair, points, printed):
         except ValueError:
             across = float("nan")
         rows.append(dict(k=k, dy=(c["y"] - y0) - q["y"], dsep=c["gap"] - q["separation"],
-                         dangle=-c["delta"] - q["angle"], dr=c["r"] - q["r"],
-                         across=across, across_printed=q["across"]))
+                         dangle=sign * c["delta"] - q["angle"], dr=c["r"] - q["r"],
+                         across=across, across_printed=q["across"], sign=sign))
     return rows
 
 
@@ -196,9 +210,10 @@ def group_gap(pair, points, group):
 
 
 def measures(grid, p):
-    """area, length (x extent), width (s extent: of the contact's elements,
-    their widths included), p_max [SI], the s of its centre of pressure."""
-    c = p > 0
+    """area, length (x extent), width (s extent) of the elements with
+    p >= P_SHARE p_max, their sizes included; p_max [SI], the s of the centre
+    of pressure, the load."""
+    c = p >= P_SHARE * p.max()
     X, Y = np.meshgrid(grid.x, grid.y, indexing="ij")
     return dict(area=c.sum() * grid.dA, length=np.ptp(X[c]) + grid.dx,
                 width=np.ptp(Y[c]) + grid.dy, p_max=float(p.max()),
@@ -333,8 +348,10 @@ def rigid_slip(pair, patch, xi, eta=0.0):
 
 
 def tangential_reference(pair, patch, law, speed, xi_O, r_O, eta=0.0):
-    """Steady rolling of a solved patch; the solution dict of bem.solve_rolling
-    with xi (at the patch's point), phi, F_x, F_y, M_z, F_N and slip_fraction."""
+    """Steady rolling of a solved patch at the creepage xi_O at O (rolling
+    radius r_O): xi = xi_O - (r_P - r_O) / r_O at the patch's point. The
+    solution dict of bem.solve_rolling with xi, phi, F_x, F_y, M_z, F_N and
+    slip_fraction."""
     from . import rolling3d
     xi = xi_O - (patch["point"]["r"] - r_O) / r_O
     w, phi = rigid_slip(pair, patch, xi, eta)
@@ -362,11 +379,15 @@ def run_load(run, prm, t):
 
 
 def run_creepage(run, t):
-    """The run's rigid creepage at t (statistics), 0 without it."""
+    """The run's rigid creepage and wheel angular velocity at t (statistics;
+    NaN without them)."""
     names, stats = hc.read_statistics(run)
-    if stats is None or not math.isfinite(t) or hc.column(names, stats, "creepage") is None:
-        return 0.0
-    return float(np.interp(t, hc.column(names, stats, "time"), hc.column(names, stats, "creepage")))
+    out = []
+    for name in ("creepage", "omega"):
+        col = hc.column(names, stats, name) if stats is not None else None
+        out.append(float(np.interp(t, hc.column(names, stats, "time"), col))
+                   if col is not None and math.isfinite(t) else float("nan"))
+    return out
 
 
 def reference(run, t, case_dir=None, grid_shape=DEFAULT_GRID, log=None, load=None, tangential=True):
@@ -388,13 +409,17 @@ def reference(run, t, case_dir=None, grid_shape=DEFAULT_GRID, log=None, load=Non
         load, src = run_load(run, prm, t)
     E, nu = float(prm["Material/Young's modulus"]), float(prm["Material/Poisson's ratio"])
     patches = normal_reference(pair, points, load, E, nu, grid_shape)
+    xi, omega = run_creepage(run, t)
+    xi = xi if math.isfinite(xi) else 0.0
+    speed, r_O = float(prm["Wheelset/Rolling speed"]), points[0]["r"]
+    if not math.isfinite(omega):
+        omega = speed * (1 - xi) / r_O
     out = dict(pair=pair, points=points, printed=printed, check=check, load=load, load_source=src,
-               patches=patches, law="frictionless", xi=run_creepage(run, t))
+               patches=patches, law="frictionless", xi=xi, omega=omega,
+               xi_undeformed=1.0 - omega * r_O / speed, r_eff=speed * (1 - xi) / omega)
     if tangential and prm.get("Contact/Friction law", "none") != "none":
         law, _, out["law"] = hc.law_of(prm)
-        speed = float(prm["Wheelset/Rolling speed"])
         for patch in patches:
             if patch["grid"] is not None:
-                patch["rolling"] = tangential_reference(pair, patch, law, speed, out["xi"],
-                                                        points[0]["r"])
+                patch["rolling"] = tangential_reference(pair, patch, law, speed, xi, r_O)
     return out
