@@ -106,9 +106,28 @@ def pair_of(prm, run, case_dir=None):
     if not all(n.strip() for n in names):
         raise ReferenceError("the reference needs both a wheel and a rail profile file")
     wheel, rail = (pf.read_profile(resolve(n, case_dir, run)) for n in names)
+    wheel = as_written(wheel, prm, "Wheel", float(prm.get(g + "Wheel profile taping line", "0")))
+    rail = as_written(rail, prm, "Rail", 0.0)
     return pf.Pair(wheel, rail, float(prm[g + "Rail inclination"]),
                    float(prm[g + "Lateral shift"]), float(prm[g + "Taping line position"]),
                    float(prm["Geometry/Wheel/Radius"]))
+
+
+def as_written(p, prm, side, taping_line):
+    """Profile points P in the program's conventions from the file's, by the
+    entries the program has since main's edb29a2 (absent: unchanged):
+    '<side> profile flip y' mirrors y, '<side> profile z down' turns z, and
+    the wheel's taping line (its y as written, mirrored with the file) goes
+    to y = 0."""
+    g = "Geometry/Profiles/%s profile " % side
+    p = np.array(p, dtype=float)
+    flip = prm.get(g + "flip y", "false") == "true"
+    if flip:
+        p[:, 0] = -p[:, 0]
+    if prm.get(g + "z down", "false") == "true":
+        p[:, 1] = -p[:, 1]
+    p[:, 0] -= -taping_line if flip else taping_line
+    return p
 
 
 def rigid_points(pair, prm):
