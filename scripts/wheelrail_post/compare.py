@@ -191,8 +191,14 @@ def law_of(prm):
     return hs.make_law("exponential", 0, f_s, f_d, k, length, time), f_s, text
 
 
-def normal_case(prm, Fn, grid=DEFAULT_GRID):
-    """hs.elliptic_case at the run's geometry and material for the load Fn."""
+def normal_case(prm, Fn, grid=DEFAULT_GRID, run=None):
+    """hs.elliptic_case at the run's geometry and material for the load Fn;
+    a profile run's: the normal problem on the profiles' gap
+    (profile_reference.normal_case; relative profile files from the current
+    directory, then @p run's parent)."""
+    from . import profile_reference
+    if profile_reference.is_profile_run(prm):
+        return profile_reference.normal_case(prm, Fn, grid, run)
     return hs.elliptic_case(grid[0], grid[1], MARGIN, Fn, float(prm["Geometry/Wheel/Radius"]),
                             float(prm["Geometry/Rail/Profile radius"]),
                             float(prm["Material/Young's modulus"]), float(prm["Material/Poisson's ratio"]))
@@ -238,6 +244,9 @@ def compare_patch(run, instant="t", grid=DEFAULT_GRID):
         return None
     t0 = time.time()
     prm = read_parameters(run)
+    from . import profile_compare, profile_reference
+    if profile_reference.is_profile_run(prm):
+        return profile_compare.as_comparison(run, instant, grid)
     law, f_s, law_text = law_of(prm)
     V = float(prm["Wheelset/Rolling speed"])
     t, xc = patch_header(path)
@@ -326,7 +335,11 @@ def slip_halves(run, r=None, instant="t"):
 
 
 def summary_lines(r):
-    """The comparison as text lines (printed by plot.py, listed in report.html)."""
+    """The comparison as text lines (printed by plot.py, listed in report.html);
+    a profile run's: profile_compare.summary_lines."""
+    if "profile" in r:
+        from . import profile_compare
+        return profile_compare.summary_lines(r["profile"])
     g = r["grid"].shape
     lines = ["half-space comparison at instant %s (%s; grid %d x %d, %.1f s): F_N %.2f kN, "
              "F_x / F_N %.4f, creepage FE %.4g / half-space %.4g"

@@ -176,6 +176,12 @@ def plot_run(run, other, out, hs_grid=hc.DEFAULT_GRID):
     patches = {i: read_patch(run, i) for i in INSTANTS}
     have_patch = all(p is not None for p in patches.values())
     comparison, hs_missing = half_space(run, hs_grid, out) if have_patch else (None, "no patch files")
+    if comparison is not None and "profile" in comparison:
+        from . import profile_compare
+        profile_compare.write_csv(os.path.join(out, "profile_reference.csv"), comparison["profile"])
+        rep.save(profile_compare.make_figure(comparison["profile"]), "profile_reference.png",
+                 "FE patch at t against the half-space reference on the profiles' gap: area, "
+                 "length, width, p_max; pressure across the patch")
 
     # Fig. 3: nodes in contact at t (and the difference to the other run)
     if have_patch:

@@ -176,6 +176,10 @@ class Pair:
         """Wheel profile height in the track frame at track y (before lowering)."""
         return _interp2(np.asarray(y) - self.shift, self.wy, self.wz)
 
+    def rolling_radius(self, y):
+        """The wheel's rolling radius R0 - z_wheel at track y."""
+        return self.R0 - _interp2(np.asarray(y, dtype=float) - self.shift, self.wy, self.wz)
+
     def rail_z(self, y, derivative=False):
         return _interp2(y, self.ry, self.rz, derivative)
 
@@ -262,6 +266,18 @@ def gap_grid(pair, point, x, s, window=0.03):
                              " point" % (s.min() / MM, s.max() / MM))
         gap[i] = _interp2(s, ws, wh) - h_rail
     return gap
+
+
+def s_coverage(pair, point, window=0.03):
+    """(s_lo, s_hi) [m]: the range of s over which both profiles are single-valued
+    around the contact POINT in its tangent plane (gap_grid's s may lie inside it)."""
+    th = -point["delta"]
+    t = np.array([math.cos(th), math.sin(th)])
+    nrm = np.array([-math.sin(th), math.cos(th)])
+    P = np.array([point["y"], point["z"]])
+    rs, _ = _local_curve(pair.ry, pair.rz, P, t, nrm, window)
+    ws, _ = _local_curve(pair.wy + pair.shift, pair.wz + pair.dz, P, t, nrm, window)
+    return max(rs[0], ws[0]), min(rs[-1], ws[-1])
 
 
 def gap_curvatures(pair, point, half=2e-3, n=9):

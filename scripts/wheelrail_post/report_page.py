@@ -136,7 +136,9 @@ def key_figures(prm, names, stats, patch, comparison, column, expected=None):
     expected = expected or {}
     rows = []
     num = lambda v: "<td class='num'>%s</td>" % v
-    if comparison is not None:
+    if comparison is not None and "profile" in comparison:
+        rows += profile_rows(comparison["profile"])
+    elif comparison is not None:
         c, h = comparison, comparison["hertz"]
         p0, a, b = hc.fit_ellipse(patch["x"], patch["y"], patch["pressure"], patch["F_n"])
         rows.append(["normal force F_N at t [kN]", num("%.2f" % (c["Fn"] * 1e-3)), num(""), num(""),
@@ -177,6 +179,24 @@ def key_figures(prm, names, stats, patch, comparison, column, expected=None):
             worst = np.nanmax(np.abs(err))
             rows.append(["energy balance error, largest over the run", num("%.2g" % worst), num(""), num(""),
                          verdict(worst, 1e-3)])
+    return rows
+
+
+def profile_rows(r):
+    """Rows (quantity, FE, reference, difference, note) of a profile run's patch
+    against its half-space reference (profile_compare.compare_run's @p r);
+    no verdicts: the convergence study covers the Hertzian case only."""
+    from . import profile_compare as pc
+    num = lambda v: "<td class='num'>%s</td>" % v
+    rows = []
+    for k, q, fe, ref, d in r["rows"]:
+        label, unit, scale = pc._LABEL[q]
+        f = r["fe"][k]
+        note = pc.expectation(q, f)
+        rows.append(["patch %d: %s [%s]" % (k, label, unit), num("%.4g" % (fe * scale)),
+                     num("%.4g" % (ref * scale)),
+                     num("%+.3f" % d if q in ("fx_fn", "slip") else "%+.1f %%" % (100 * d)),
+                     "<td class='info'>%s</td>" % html.escape(note)])
     return rows
 
 
