@@ -170,6 +170,14 @@ namespace WheelRail
 
 
 
+    bool
+    GeometryModel::hertzian_patch() const
+    {
+      return true;
+    }
+
+
+
     std::string
     GeometryModel::description() const
     {

@@ -123,6 +123,12 @@ namespace WheelRail
           return {c.rolling_radius, c.radius_across};
         }
 
+        bool
+        hertzian_patch() const override
+        {
+          return !profiles.from_files();
+        }
+
         std::string
         description() const override
         {

@@ -1,3 +1,4 @@
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/verification/expected_errors.h>
@@ -274,7 +275,11 @@ namespace WheelRail
                  << fmt(y_min * 1e3, 4) << " to " << fmt(y_max * 1e3, 4) << " mm, peak pressure "
                  << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
                  << " MPa, slip (eq. 5) " << n_slip << " of " << n_contact << " nodes" << std::endl;
-    if (name == "t" && !patch.empty())
+    if (name == "t" && !patch.empty() && !access.parameters.geometry_model->hertzian_patch())
+      access.pcout << "Contact patch at t: the profiles' patch is not Hertz's; its reference is "
+                      "the half-space solution of their gap (scripts/profile_reference.py "
+                   << access.parameters.problem.output_directory << ")" << std::endl;
+    else if (name == "t" && !patch.empty())
       {
         const Verification::EllipseFit fit = Verification::fit_hertz_ellipse(patch);
         access.pcout << "Contact patch at t against Hertz at the patch's normal force "
