@@ -123,6 +123,18 @@ namespace WheelRail
           return {c.rolling_radius, c.radius_across};
         }
 
+        std::vector<RigidContact>
+        rigid_contacts() const override
+        {
+          return shape.contacts();
+        }
+
+        bool
+        has_profile_files() const override
+        {
+          return profiles.from_files();
+        }
+
         std::string
         description() const override
         {

@@ -25,6 +25,7 @@
 
 #include <wheelrail/geometry/profile.h>
 #include <wheelrail/geometry/profile_contact.h>
+#include <wheelrail/geometry/rigid_contact.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <algorithm>
@@ -72,22 +73,6 @@ namespace WheelRail
       {
         return !wheel_file.empty() || !rail_file.empty();
       }
-    };
-
-
-
-    /** A rigid contact point of the two undeformed profiles, in the mesh's
-     *  frame. */
-    struct RigidContact
-    {
-      double y;              ///< lateral position [m]
-      double z;              ///< height of the rail top there [m]
-      double separation;     ///< distance before any load [m] (0: the main point)
-      double contact_angle;  ///< angle of the rail's normal from z [rad]
-      double rolling_radius; ///< the wheel's radius there [m]
-      /** Radius of relative curvature across, 1 / (z_w'' - z_r'') [m]
-       *  (infinite where the profiles are conformal). */
-      double radius_across;
     };
 
 
