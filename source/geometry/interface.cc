@@ -186,6 +186,22 @@ namespace WheelRail
 
 
 
+    std::vector<RigidContact>
+    GeometryModel::rigid_contacts() const
+    {
+      return {};
+    }
+
+
+
+    bool
+    GeometryModel::has_profile_files() const
+    {
+      return false;
+    }
+
+
+
     ContactRadii
     GeometryModel::contact_radii() const
     {

@@ -123,10 +123,16 @@ namespace WheelRail
           return {c.rolling_radius, c.radius_across};
         }
 
-        bool
-        hertzian_patch() const override
+        std::vector<RigidContact>
+        rigid_contacts() const override
         {
-          return !profiles.from_files();
+          return shape.contacts();
+        }
+
+        bool
+        has_profile_files() const override
+        {
+          return profiles.from_files();
         }
 
         std::string

@@ -81,7 +81,10 @@ namespace WheelRail
 
   ContactPatch::ContactPatch(const SimulatorAccess &access)
     : access(access)
-  {}
+  {
+    if (access.parameters.geometry_model->reports_patches())
+      patches.emplace(access.parameters.geometry_model->rigid_contacts());
+  }
 
 
 
@@ -227,9 +230,12 @@ namespace WheelRail
         << "f|F_n| - |F_t| > " << contact.adhesion_tolerance(0)
         << " N with the node's own f; eq. 6: s_n > " << NodalContact::slip_velocity_threshold
         << " m/s) and mapped with the same weights: adhesion_share, slip_share; the flags: share > "
-           "0.5\n"
+           "0.5"
+        << (patches ? "; patch: the patch of the node's y (nearest rigid contact point, from 1)\n" :
+                      "\n")
         << "x,y,in_contact,pressure,shear_x,shear,slip_velocity,cof,adhesion_eq5,slip_eq6,"
-           "F_n,area,adhesion_share,slip_share\n";
+           "F_n,area,adhesion_share,slip_share"
+        << (patches ? ",patch\n" : "\n");
     unsigned int n_contact = 0, n_slip = 0;
     double       p_max = 0, s_max = 0, x_min = 1e30, x_max = -1e30, y_min = 1e30, y_max = -1e30;
     std::vector<Verification::PatchNode> patch;
@@ -244,7 +250,10 @@ namespace WheelRail
         csv << m.X[0] << ',' << m.X[1] << ',' << in << ',' << p << ','
             << m.tangential_force[0] / m.area << ',' << shear << ',' << m.slip_velocity << ','
             << m.cof << ',' << adhere << ',' << m.slip_eq6() << ',' << m.normal_force << ','
-            << m.area << ',' << m.adhesion_share << ',' << m.slip_share << '\n';
+            << m.area << ',' << m.adhesion_share << ',' << m.slip_share;
+        if (patches)
+          csv << ',' << patches->patch_of(m.X[1]) + 1;
+        csv << '\n';
         if (in)
           {
             patch.push_back({m.X[0], m.X[1], p, m.normal_force});

@@ -7,8 +7,8 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <wheelrail/geometry/interface.h>
 #include <wheelrail/base/stop_signal.h>
+#include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/patch_series.h>
 #include <wheelrail/postprocess/series_hdf5.h>
@@ -108,19 +108,25 @@ namespace WheelRail
     std::vector<Postprocessor *> selected;
     for (const auto &[name, factory] : parameters.output.postprocessors)
       selected.push_back(add(factory(*access)));
+    // a profile case's results per patch: columns after the selected ones
+    // (no state: checkpointed last, writing nothing)
+    std::vector<Postprocessor *> with_columns = selected;
+    if (contact && parameters.geometry_model->reports_patches())
+      with_columns.push_back(patch_statistics = add(std::make_unique<PatchStatistics>(*access)));
     divergence =
       add(std::make_unique<DivergenceCheck>(*access, *energy_balance, [this] { write_records(); }));
     add(std::move(balance));
-    statistics = add(std::make_unique<Statistics>(
-      *access,
-      *energy_balance,
-      std::vector<const Postprocessor *>(selected.begin(), selected.end())));
-    samples    = add(std::make_unique<SampleRecorder>(*access));
-    vtu        = add(std::make_unique<VtuOutput>(*access));
+    statistics =
+      add(std::make_unique<Statistics>(*access,
+                                       *energy_balance,
+                                       std::vector<const Postprocessor *>(with_columns.begin(),
+                                                                          with_columns.end())));
+    samples = add(std::make_unique<SampleRecorder>(*access));
+    vtu     = add(std::make_unique<VtuOutput>(*access));
     // the order of the checkpoint format (a checkpoint of an earlier run
     // resumes only in this order), then the selected ones in their order
     checkpointed = {statistics, vtu, probes, contact_patch, energy_balance, samples, divergence};
-    checkpointed.insert(checkpointed.end(), selected.begin(), selected.end());
+    checkpointed.insert(checkpointed.end(), with_columns.begin(), with_columns.end());
   }
 
 
@@ -306,6 +312,8 @@ namespace WheelRail
               << "/ (solution.pvd, statistics, probe.csv, parameters.prm)" << std::endl;
       }
     contact_patch->print_summary();
+    if (patch_statistics)
+      patch_statistics->print_summary();
     Verification::run_final_check(*access, *probes, *energy_balance, *samples);
   }
 } // namespace WheelRail

@@ -110,6 +110,15 @@ namespace WheelRail
     {
       return passes.front().slaves;
     }
+    /** Slave node states of pass @p p (replicated on all ranks). A state in
+     *  contact carries the force F = normal_force normal + tangential_force
+     *  on its own node: F on the first pass's slave body (the wheel) in the
+     *  first pass, -F in the second, as summary() sums them. */
+    const std::vector<ContactNodeState> &
+    slave_states(const unsigned int p) const
+    {
+      return passes[p].slaves;
+    }
     /**
      * The slave nodes of the first pass (the wheel tread), in the order of
      * slave_states(), with the forces and states of every pass.
@@ -527,8 +536,8 @@ namespace WheelRail
     void
     accumulate(const Pass &pass, const bool advance);
 
-    const ContactParameters     &prm;
-    MPI_Comm                     mpi_communicator;
+    const ContactParameters           &prm;
+    MPI_Comm                           mpi_communicator;
     std::shared_ptr<const FrictionLaw> law;
     /** The friction step at a slave node (law, slip rate, relaxation). */
     std::unique_ptr<FrictionModel> friction;

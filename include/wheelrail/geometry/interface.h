@@ -23,6 +23,7 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <wheelrail/geometry/rigid_contact.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <memory>
@@ -208,6 +209,25 @@ namespace WheelRail
        *  has_wheel()). */
       virtual ContactRadii
       contact_radii() const;
+
+      /** The rigid contact points of the undeformed bodies in the mesh's
+       *  frame, the main one (at O) first; none by default. */
+      virtual std::vector<RigidContact>
+      rigid_contacts() const;
+
+      /** Whether the bodies' shapes are profiles read from files (false by
+       *  default). */
+      virtual bool
+      has_profile_files() const;
+
+      /** Whether the contact results are reported per patch, one patch per
+       *  rigid contact point (postprocess/contact_patches.h): with profile
+       *  files or more than one rigid contact point. */
+      bool
+      reports_patches() const
+      {
+        return has_profile_files() || rigid_contacts().size() > 1;
+      }
 
       /** Whether the bodies are a block on a plate, the case of the sliding
        *  block checks (MaterialIds::block on MaterialIds::plate). */

@@ -7,12 +7,14 @@
 #ifndef wheelrail_postprocess_contact_patch_h
 #define wheelrail_postprocess_contact_patch_h
 
+#include <wheelrail/postprocess/contact_patches.h>
 #include <wheelrail/postprocess/postprocessor.h>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -101,7 +103,9 @@ namespace WheelRail
    * faces, patch_NAME.vtu (write_patch_surface()), on the tread faces
    * over the zone patch_tread_NAME.vtu (write_tread_surface()); with
    * Output/Patch averaging window > 0, the time means over that window
-   * centred on each instant as patch_NAME_mean.csv.
+   * centred on each instant as patch_NAME_mean.csv. Where the geometry
+   * reports patches (a profile case), patch_NAME.csv has the column patch,
+   * the node's patch (ContactPatches::patch_of(), from 1).
    * Active with a wheelset and contact.
    */
   class ContactPatch : public SerializedPostprocessor<ContactPatch>
@@ -155,9 +159,11 @@ namespace WheelRail
     write_snapshot(const std::string &name, const double centre) const;
 
     const SimulatorAccess &access;
-    double                 previous_centre = -std::numeric_limits<double>::max();
-    unsigned int           next_snapshot   = 0;
-    Window                 windows[3];
+    /** The patches of a geometry that reports them. */
+    std::optional<ContactPatches> patches;
+    double                        previous_centre = -std::numeric_limits<double>::max();
+    unsigned int                  next_snapshot   = 0;
+    Window                        windows[3];
   };
 } // namespace WheelRail
 

@@ -24,6 +24,7 @@
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/postprocess/energy_balance.h>
 #include <wheelrail/postprocess/output_files.h>
+#include <wheelrail/postprocess/patch_statistics.h>
 #include <wheelrail/postprocess/postprocessor.h>
 #include <wheelrail/postprocess/probes.h>
 #include <wheelrail/postprocess/statistics.h>
@@ -203,7 +204,7 @@ namespace WheelRail
     std::unique_ptr<Wheelset>                 wheelset;
     /** The wheelset coupled to the FE wheel, for the solver */
     std::unique_ptr<WheelsetCoupling> wheelset_coupling;
-    std::string                               output_directory;
+    std::string                       output_directory;
     /** Held by rank 0 from the start to the end of the run. */
     std::unique_ptr<DirectoryLock> lock;
     /** OUTDIR/checkpoint, or checkpoint.old if a run died between the
@@ -230,6 +231,8 @@ namespace WheelRail
     Statistics                  *statistics     = nullptr;
     SampleRecorder              *samples        = nullptr;
     VtuOutput                   *vtu            = nullptr;
+    /** The results per patch (a geometry that reports patches), or null. */
+    PatchStatistics *patch_statistics = nullptr;
     /** When the last checkpoint was written (Output/Checkpoint minutes). */
     std::chrono::steady_clock::time_point last_checkpoint;
   };
