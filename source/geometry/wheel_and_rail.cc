@@ -123,6 +123,14 @@ namespace WheelRail
           return {c.rolling_radius, c.radius_across};
         }
 
+        std::optional<double>
+        profile_contact_angle() const override
+        {
+          if (!profiles.from_files())
+            return std::nullopt;
+          return shape.contacts().front().contact_angle;
+        }
+
         std::string
         description() const override
         {

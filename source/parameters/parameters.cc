@@ -43,7 +43,7 @@ namespace WheelRail
     problem.parse_parameters(prm);
     geometry.parse_parameters(prm);
     geometry.input_directory = std::filesystem::path(filename).parent_path().string();
-    geometry_model = Geometry::GeometryModel::create(problem.geometry, geometry, prm);
+    geometry_model           = Geometry::GeometryModel::create(problem.geometry, geometry, prm);
     material.parse_parameters(prm);
     solver.parse_parameters(prm);
     boundary.parse_parameters(prm);
@@ -75,5 +75,6 @@ namespace WheelRail
     // the entries against each other, before anything is built
     Consistency::check_loads(*this);
     Consistency::check_wheel_and_rail(*this);
+    Consistency::check_wheelset_kinematics(*this);
   }
 } // namespace WheelRail
