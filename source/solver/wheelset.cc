@@ -149,11 +149,13 @@ namespace WheelRail
   Wheelset::kinetic() const
   {
     const double Mc = prm.sprung_mass;
-    return 0.5 * m_axle * (velocity[0] * velocity[0] + velocity[2] * velocity[2]) +
-           0.5 * Mc * (velocity[0] * velocity[0] + v_c * v_c) +
-           0.5 * prm.axle_inertia * omega * omega +
-           // the lateral motion at constant v_y (0 without lateral creepage)
-           0.5 * (m_axle + Mc) * velocity[1] * velocity[1];
+    double       e  = 0.5 * m_axle * (velocity[0] * velocity[0] + velocity[2] * velocity[2]) +
+               0.5 * Mc * (velocity[0] * velocity[0] + v_c * v_c) +
+               0.5 * prm.axle_inertia * omega * omega;
+    // the lateral motion at constant v_y (lateral creepage, yaw)
+    if (velocity[1] != 0)
+      e += 0.5 * (m_axle + Mc) * velocity[1] * velocity[1];
+    return e;
   }
 
 

@@ -22,9 +22,10 @@ namespace WheelRail
    * in y a constant velocity (eta - psi) V, 0 unless Wheelset/Lateral
    * creepage or Yaw angle is given, held by a lateral guide whose work
    * enters external_work()) and of the sprung mass (vertical; horizontally
-   * it moves with the axle). The bore nodes of the wheel belong to the rigid body: their
-   * lumped masses and inertia are added to the axle's, and the FE forces on
-   * them drive it. Central differences as for the FE nodes.
+   * it moves with the axle). The bore nodes of the wheel belong to the
+   * rigid body: their lumped masses and inertia are added to the axle's,
+   * and the FE forces on them drive it. Central differences as for the FE
+   * nodes.
    *
    * The suspension force on the axle is
    *   F_s = -M_c g + K (d_c - d_a) + C (v_c - v_a),
