@@ -214,6 +214,14 @@ namespace WheelRail
 
 
 
+    std::optional<double>
+    GeometryModel::profile_contact_angle() const
+    {
+      return std::nullopt;
+    }
+
+
+
     bool
     GeometryModel::is_block_on_plate() const
     {

@@ -135,6 +135,14 @@ namespace WheelRail
           return profiles.from_files();
         }
 
+        std::optional<double>
+        profile_contact_angle() const override
+        {
+          if (!profiles.from_files())
+            return std::nullopt;
+          return shape.contacts().front().contact_angle;
+        }
+
         std::string
         description() const override
         {

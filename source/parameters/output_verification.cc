@@ -199,7 +199,8 @@ namespace WheelRail
       "none",
       Patterns::Selection(
         "none|wave arrival|longitudinal frequency|bending frequency|energy balance|"
-        "inclined plane|tangential sliding|impact|static start|traction|free rolling"),
+        "inclined plane|tangential sliding|impact|static start|traction|free rolling|"
+        "creep forces"),
       "Analytic comparison made at the end of an explicit run on the bar: "
       "'wave arrival': first time the probe velocity exceeds Wave threshold "
       "times the far-end steady value, against L/sqrt(E/rho); "
@@ -222,7 +223,12 @@ namespace WheelRail
       "Coulomb coefficient or f_D of the exponential law; 'free rolling' (rigid "
       "axle, no torque): the mean F_N over the second half against the static "
       "load, and the mean F_L / F_N and the mean longitudinal creepage of the "
-      "trailing part near zero.");
+      "trailing part near zero; 'creep forces' (rigid axle, the paper's pair: "
+      "Hertz b/a = 0.752, nu = 0.3): the mean F_lateral / F_N over the second "
+      "half against Kalker's linear theory -G c^2 C22 eta / F_N (Wheelset/Lateral "
+      "creepage or Yaw angle), and the mean F_L / F_N against -G c^2 C11 xi / F_N "
+      "where an Initial creepage xi is held for the whole run; c^2 = a b from "
+      "Hertz at the mean F_N, C11 = 4.623, C22 = 4.175.");
     flags.mark("Check", EntryFlag::static_start_free);
     prm.declare_entry("Displacement gradient",
                       "1e-3, 2e-4, -3e-4, 5e-4, -1e-3, 2e-4, 1e-4, 3e-4, 2e-3",

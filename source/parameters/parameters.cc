@@ -77,5 +77,6 @@ namespace WheelRail
     // the entries against each other, before anything is built
     Consistency::check_loads(*this);
     Consistency::check_wheel_and_rail(*this);
+    Consistency::check_wheelset_kinematics(*this);
   }
 } // namespace WheelRail

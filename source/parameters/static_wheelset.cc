@@ -158,6 +158,33 @@ namespace WheelRail
                       "about 1 ms); the wheel's torsional vibration that the onset "
                       "of traction excites is removed by the run-up damping.");
     flags.mark("Creepage control time", EntryFlag::static_start_free);
+    prm.declare_entry("Lateral creepage",
+                      "0",
+                      Patterns::Double(-0.1, 0.1),
+                      "Lateral creepage eta = v_s / V of the rolling wheel [-], range "
+                      "[-0.1, 0.1], used within [-0.02, 0.02]: the rigid axle (and with it "
+                      "the bore nodes, and every wheel node's initial velocity) moves "
+                      "laterally at the constant velocity v_y = eta V from the start of "
+                      "rolling, y towards the flange (SPEC 10: v the wheel's rigid velocity "
+                      "relative to the rail at the contact point, s = n x x; on a contact "
+                      "at angle delta, v_s = v_y cos(delta) + v_z sin(delta)). The axle's "
+                      "lateral guide supplies the force that keeps v_y constant, and its "
+                      "work enters the energy balance. Kalker's linear theory: the lateral "
+                      "creep force on the wheel is F_y = -G c^2 C22 eta. 0 = none; not "
+                      "together with Yaw angle.");
+    flags.mark("Lateral creepage", EntryFlag::static_start_free);
+    prm.declare_entry("Yaw angle",
+                      "0",
+                      Patterns::Double(-0.1, 0.1),
+                      "Yaw angle psi of the wheelset about z (the axle turned from y "
+                      "towards -x for psi > 0) [rad], range [-0.1, 0.1], used within "
+                      "[-0.02, 0.02]. Small-angle kinematics: the mesh is not turned; a "
+                      "wheelset moving forward at V with yaw psi has, in its own frame, "
+                      "the lateral velocity -psi V relative to the track (to first order "
+                      "in psi, the error psi^2 / 2), so psi is realised as the lateral "
+                      "creepage eta = -psi (the same run as Lateral creepage = -psi). "
+                      "0 = none; not together with Lateral creepage.");
+    flags.mark("Yaw angle", EntryFlag::static_start_free);
     prm.declare_entry("Run-up damping",
                       "0",
                       Patterns::Double(0, 1e6),
@@ -239,6 +266,8 @@ namespace WheelRail
     torque_ramp_time      = prm.get_double("Torque ramp time");
     initial_creepage      = prm.get_double("Initial creepage");
     creepage_control_time = prm.get_double("Creepage control time");
+    lateral_creepage      = prm.get_double("Lateral creepage");
+    yaw_angle             = prm.get_double("Yaw angle");
     runup_damping         = prm.get_double("Run-up damping");
     runup_time            = prm.get_double("Run-up time");
     runup_damping_shape   = prm.get("Run-up damping shape");

@@ -7,7 +7,9 @@
 #include <wheelrail/mesh/geometry.h>
 #include <wheelrail/postprocess/contact_patch.h>
 #include <wheelrail/postprocess/statistics.h>
+#include <wheelrail/solver/wheelset_creepages.h>
 
+#include <optional>
 #include <sstream>
 
 namespace WheelRail
@@ -71,6 +73,16 @@ namespace WheelRail
         add("axle z [m]", access.wheelset->axle_position()[2]);
         add("omega [rad/s]", access.wheelset->angular_velocity());
         add("creepage [-]", access.wheelset->creepage());
+        // lateral and spin creepage at the main contact point, where the
+        // run has lateral kinematics or profiles (SPEC 10)
+        const std::optional<double> delta =
+          access.parameters.geometry_model->profile_contact_angle();
+        if (reports_kinematic_creepages(access.parameters.wheelset, delta.has_value()))
+          {
+            const Creepages c = kinematic_creepages(*access.wheelset, delta.value_or(0.));
+            add("lateral creepage [-]", c.lateral);
+            add("spin creepage [1/m]", c.spin);
+          }
       }
     else if (access.parameters.geometry_model->has_wheel())
       {

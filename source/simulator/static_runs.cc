@@ -71,6 +71,49 @@ namespace WheelRail
             << "  both within " << fmt(tol) << "                : "
             << Verification::verdict(stress_error < tol && force_ratio < tol) << std::endl;
     }
+
+
+
+    /** The lines of the rolling start that say what holds the wheelset:
+     *  the held creepage, the lateral creepage or yaw, the run-up damping
+     *  of shape @p shape. */
+    void
+    report_rolling_controls(const ConditionalOStream &pcout,
+                            const Parameters         &parameters,
+                            const Wheelset           &wheelset,
+                            const RunupDampingShape   shape)
+    {
+      const WheelsetParameters &wp = parameters.wheelset;
+      if (wp.creepage_control_time > 0)
+        {
+          pcout << "  creepage held at " << fmt(wp.initial_creepage)
+                << " (omega = v_x (1 - xi_0) / r) ";
+          if (wp.creepage_control_time < parameters.solver.end_time)
+            pcout << "until t = " << fmt(wp.creepage_control_time * 1e3) << " ms, the torque after";
+          else
+            pcout << "for the whole run";
+          pcout << std::endl;
+        }
+      if (wp.axle_lateral_creepage() != 0)
+        pcout << "  lateral creepage eta = " << fmt(wp.axle_lateral_creepage())
+              << (wp.yaw_angle != 0 ?
+                    " (yaw angle psi = " + fmt(wp.yaw_angle) + " rad, eta = -psi)" :
+                    std::string())
+              << ": the axle moves laterally at v_y = eta V = " << fmt(wheelset.axle_velocity()[1])
+              << " m/s" << std::endl;
+      if (wp.runup_damping > 0 && wp.runup_time > 0)
+        {
+          pcout << "  run-up damping alpha = " << fmt(wp.runup_damping) << " 1/s of "
+                << (shape == RunupDampingShape::nodes ?
+                      "the velocity relative to the wheelset's rigid motion" :
+                      "the wheel's rigid motion relative to the axle's");
+          if (wp.runup_time < parameters.solver.end_time)
+            pcout << " until t = " << fmt(wp.runup_time * 1e3) << " ms";
+          else
+            pcout << " for the whole run";
+          pcout << std::endl;
+        }
+    }
   } // namespace
 
 
@@ -250,29 +293,7 @@ namespace WheelRail
           << fmt(radius * 1e3, 7) << " mm, omega = " << fmt(wheelset->angular_velocity(), 6)
           << " rad/s, driving torque " << fmt(wheelset->torque(1e30) * 1e-3, 5)
           << " kN m (mu_n = " << fmt(parameters.wheelset.traction_coefficient) << ")" << std::endl;
-    const WheelsetParameters &wp = parameters.wheelset;
-    if (wp.creepage_control_time > 0)
-      {
-        pcout << "  creepage held at " << fmt(wp.initial_creepage)
-              << " (omega = v_x (1 - xi_0) / r) ";
-        if (wp.creepage_control_time < parameters.solver.end_time)
-          pcout << "until t = " << fmt(wp.creepage_control_time * 1e3) << " ms, the torque after";
-        else
-          pcout << "for the whole run";
-        pcout << std::endl;
-      }
-    if (wp.runup_damping > 0 && wp.runup_time > 0)
-      {
-        pcout << "  run-up damping alpha = " << fmt(wp.runup_damping) << " 1/s of "
-              << (wheelset_coupling->damping_shape() == RunupDampingShape::nodes ?
-                    "the velocity relative to the wheelset's rigid motion" :
-                    "the wheel's rigid motion relative to the axle's");
-        if (wp.runup_time < parameters.solver.end_time)
-          pcout << " until t = " << fmt(wp.runup_time * 1e3) << " ms";
-        else
-          pcout << " for the whole run";
-        pcout << std::endl;
-      }
+    report_rolling_controls(pcout, parameters, *wheelset, wheelset_coupling->damping_shape());
   }
 
 

@@ -83,19 +83,19 @@ namespace WheelRail
                                VectorType       &f,
                                DampingSums      &sums) const
   {
-    const Point<dim>               axle     = wheelset.axle_position();
-    const Tensor<1, dim>          &Va       = wheelset.axle_velocity();
-    const double                   omega    = wheelset.angular_velocity();
-    const std::vector<Point<dim>> &nodes    = fe->support_points();
-    const double                  *U        = u.begin();
-    const double                  *V        = v.begin();
-    const double                  *M        = fe->lumped_mass().begin();
-    double                        *F        = f.begin();
-    const unsigned int             n        = u.locally_owned_size();
+    const Point<dim>               axle  = wheelset.axle_position();
+    const Tensor<1, dim>          &Va    = wheelset.axle_velocity();
+    const double                   omega = wheelset.angular_velocity();
+    const std::vector<Point<dim>> &nodes = fe->support_points();
+    const double                  *U     = u.begin();
+    const double                  *V     = v.begin();
+    const double                  *M     = fe->lumped_mass().begin();
+    double                        *F     = f.begin();
+    const unsigned int             n     = u.locally_owned_size();
 
     // the node's rigid velocity V_a + omega e_y x r (r relative to the
-    // axle) in the DoF's direction (a node's x, y, z DoFs are contiguous);
-    // 0 on the rail
+    // axle; V_a with the lateral creepage's v_y) in the DoF's direction
+    // (a node's x, y, z DoFs are contiguous); 0 on the rail
     const auto rigid_velocity = [&](const unsigned int k) {
       const unsigned int component = fe->dof_component(k);
       const unsigned int first     = k - component;
@@ -105,7 +105,7 @@ namespace WheelRail
         return Va[0] + omega * rz;
       if (component == 2)
         return Va[2] - omega * rx;
-      return 0.;
+      return Va[1]; // the lateral creepage's constant v_y (else 0)
     };
     // the sums in locals, as scalars: in the struct the compiler pairs
     // them into vector additions, without the multiply-adds of their bits

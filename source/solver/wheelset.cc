@@ -68,7 +68,9 @@ namespace WheelRail
     displacement  = static_axle - centre;
     d_axle_static = displacement[2];
     radius        = rolling_radius;
-    velocity      = Tensor<1, dim>({prm.rolling_speed, 0., 0.});
+    // lateral creepage and yaw: the axle moves laterally at (eta - psi) V
+    velocity =
+      Tensor<1, dim>({prm.rolling_speed, prm.axle_lateral_creepage() * prm.rolling_speed, 0.});
     // rolling towards +x turns the wheel about +y: the contact point
     // (x - x_axle = -r e_z) then has omega e_y x (-r e_z) = -V e_x
     omega = prm.rolling_speed * (1. - prm.initial_creepage) / rolling_radius;
@@ -128,6 +130,13 @@ namespace WheelRail
         omega += h * (moment + T) / I;
       }
     work += T * h * 0.5 * (omega_old + omega);
+    if (velocity[1] != 0)
+      {
+        // the lateral guide holds v_y against the FE force on the bore:
+        // its force -F_y does the work -F_y v_y h
+        work -= force[1] * velocity[1] * h;
+        displacement[1] += dt * velocity[1];
+      }
     displacement[0] += dt * velocity[0];
     displacement[2] += dt * velocity[2];
     d_c += dt * v_c;
@@ -140,9 +149,13 @@ namespace WheelRail
   Wheelset::kinetic() const
   {
     const double Mc = prm.sprung_mass;
-    return 0.5 * m_axle * (velocity[0] * velocity[0] + velocity[2] * velocity[2]) +
-           0.5 * Mc * (velocity[0] * velocity[0] + v_c * v_c) +
-           0.5 * prm.axle_inertia * omega * omega;
+    double       e  = 0.5 * m_axle * (velocity[0] * velocity[0] + velocity[2] * velocity[2]) +
+               0.5 * Mc * (velocity[0] * velocity[0] + v_c * v_c) +
+               0.5 * prm.axle_inertia * omega * omega;
+    // the lateral motion at constant v_y (lateral creepage, yaw)
+    if (velocity[1] != 0)
+      e += 0.5 * (m_axle + Mc) * velocity[1] * velocity[1];
+    return e;
   }
 
 

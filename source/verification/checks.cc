@@ -93,7 +93,8 @@ namespace WheelRail
                                                          {"impact", impact},
                                                          {"free rolling", free_rolling},
                                                          {"static start", static_start},
-                                                         {"traction", traction}};
+                                                         {"traction", traction},
+                                                         {"creep forces", creep_forces}};
       return table;
     }
 

@@ -79,6 +79,18 @@ namespace WheelRail
      */
     void
     check_wheel_and_rail(const Parameters &p);
+
+    /** The largest |lateral creepage| (Wheelset/Lateral creepage, or the
+     *  Yaw angle's -psi) of the small-angle kinematics [-]. */
+    constexpr double max_lateral_creepage = 0.02;
+
+    /**
+     * Refuse Wheelset/Lateral creepage and Yaw angle given together (each
+     * sets the axle's lateral velocity), and a lateral creepage eta - psi
+     * outside [-0.02, 0.02] (kinematics_checks.cc).
+     */
+    void
+    check_wheelset_kinematics(const Parameters &p);
   } // namespace Consistency
 } // namespace WheelRail
 

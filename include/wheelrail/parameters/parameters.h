@@ -304,6 +304,8 @@ namespace WheelRail
     double torque_ramp_time;
     double initial_creepage;      ///< xi_0 = (V - omega r) / V at the start [-]
     double creepage_control_time; ///< omega follows v_x (1 - xi_0) / r until then [s]
+    double lateral_creepage;      ///< eta: the axle moves laterally at eta V [-]
+    double yaw_angle;             ///< psi about z [rad]: the axle moves laterally at -psi V
     double runup_damping;         ///< alpha of the run-up damping [1/s]
     double runup_time;            ///< the run-up damping acts until then [s]
     /** "nodes" (each node's v - v_rigid) or "wheel rigid motion" (its
@@ -313,6 +315,15 @@ namespace WheelRail
     /** Directory of the static start's state: read if there, else
      *  written ("": neither) */
     std::string static_start_state;
+
+    /** The axle's lateral velocity per unit rolling speed, eta - psi [-]:
+     *  Lateral creepage and Yaw angle set the same lateral motion
+     *  (small-angle kinematics; at most one of them is non-zero). */
+    double
+    axle_lateral_creepage() const
+    {
+      return lateral_creepage - yaw_angle;
+    }
 
     static void
     declare_parameters(ParameterHandler &prm);

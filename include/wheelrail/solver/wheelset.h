@@ -19,10 +19,13 @@ namespace WheelRail
 {
   /**
    * Rigid-body state of the axle (translation in x and z, rotation about y;
-   * y is fixed) and of the sprung mass (vertical; horizontally it moves with
-   * the axle). The bore nodes of the wheel belong to the rigid body: their
-   * lumped masses and inertia are added to the axle's, and the FE forces on
-   * them drive it. Central differences as for the FE nodes.
+   * in y a constant velocity (eta - psi) V, 0 unless Wheelset/Lateral
+   * creepage or Yaw angle is given, held by a lateral guide whose work
+   * enters external_work()) and of the sprung mass (vertical; horizontally
+   * it moves with the axle). The bore nodes of the wheel belong to the
+   * rigid body: their lumped masses and inertia are added to the axle's,
+   * and the FE forces on them drive it. Central differences as for the FE
+   * nodes.
    *
    * The suspension force on the axle is
    *   F_s = -M_c g + K (d_c - d_a) + C (v_c - v_a),
@@ -53,8 +56,9 @@ namespace WheelRail
     steady_traction_coefficient() const;
 
     /** Start the rolling run: axle at @p static_axle (after the static
-     *  solve), velocity V along x, angular velocity +V (1 - xi_0) / r_eff
-     *  about y (xi_0 the initial creepage)
+     *  solve), velocity V along x and (eta - psi) V along y (lateral
+     *  creepage, yaw), angular velocity +V (1 - xi_0) / r_eff about y
+     *  (xi_0 the initial creepage)
      *  (SPEC 5.3 writes -V/r_eff, which with its own v = V e_x + omega x
      *  (x - x_axle) would make the contact point move at 2V). */
     void
@@ -169,7 +173,7 @@ namespace WheelRail
     double
     spring_energy() const; ///< suspension spring beyond the static preload
     double
-    external_work() const; ///< gravity on axle and sprung mass, torque
+    external_work() const; ///< gravity on axle and sprung mass, torque, lateral guide
     double
     damper_dissipation() const
     {
@@ -182,11 +186,12 @@ namespace WheelRail
     const Point<dim>          centre; ///< reference axle centre
     double                    m_axle = 0, m_bore = 0, i_bore = 0, m_wheel = 0, i_wheel = 0;
     bool                      active = false;
-    Tensor<1, dim>            displacement, velocity; ///< axle, x and z used
+    Tensor<1, dim>            displacement, velocity; ///< axle (v_y constant)
     double                    theta = 0, omega = 0;
     double                    d_axle_static = 0; ///< axle z displacement at the static state
     double                    d_c = 0, v_c = 0;  ///< sprung mass, from the static state
-    double                    work = 0, damper_loss = 0, radius = 0;
+    double                    work        = 0;   ///< of the torque and the lateral guide [J]
+    double                    damper_loss = 0, radius = 0;
   };
 } // namespace WheelRail
 

@@ -87,6 +87,9 @@ namespace WheelRail
     static_start(const CheckInput &in);
     void
     traction(const CheckInput &in);
+    /** Creep forces against Kalker's linear theory (check_creep_forces.cc). */
+    void
+    creep_forces(const CheckInput &in);
   } // namespace Verification
 } // namespace WheelRail
 
