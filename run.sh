@@ -10,7 +10,7 @@
 #   ./run.sh CASE.prm [-np N] [--resume]  same set-up, then run CASE.prm on N ranks
 #                               (default 2); --resume continues from its checkpoint
 #   ./run.sh bench [N ...]      same set-up, then the speed benchmarks prm/bench_paper.prm,
-#                               bench_paper_single.prm and bench_block.prm on 1 and 2 ranks (or the rank
+#                               bench_paper_single.prm, bench_profiles.prm and bench_block.prm on 1 and 2 ranks (or the rank
 #                               counts N given); figures appended to bench/results.csv,
 #                               after the machine's measured FMA peak and memory bandwidth
 #                               and the element loop's family batch on cached data (build/
@@ -97,7 +97,8 @@ report_case() {
 }
 
 # The speed benchmarks: prm/bench_paper.prm, prm/bench_paper_single.prm (the
-# same with single-precision element geometry) and prm/bench_block.prm on each
+# same with single-precision element geometry), prm/bench_profiles.prm (S1002
+# on 60E1, single) and prm/bench_block.prm on each
 # rank count, each timing.csv row appended to bench/results.csv with the date,
 # commit, CPU, the 2-core triad bandwidth, the bytes per element-step and the case.
 run_bench() {
@@ -129,9 +130,10 @@ run_bench() {
   # one synchronisation's own cost, apart from the ranks waiting for each other
   mpirun -np 2 "$top/build/mpi_exchange"
   local case dir rows=0
-  for case in paper paper_single block; do
+  for case in paper paper_single profiles block; do
     dir=results/bench
     [ "$case" = paper_single ] && dir=results/bench_single
+    [ "$case" = profiles ] && dir=results/bench_profiles
     [ "$case" = block ] && dir=results/bench_block
     for np in "${counts[@]}"; do
       echo "run.sh: benchmark prm/bench_$case.prm on $np rank(s)"

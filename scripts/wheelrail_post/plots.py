@@ -182,6 +182,9 @@ def plot_run(run, other, out, hs_grid=hc.DEFAULT_GRID):
         rep.save(profile_compare.make_figure(comparison["profile"]), "profile_reference.png",
                  "FE patch at t against the half-space reference on the profiles' gap: area, "
                  "length, width, p_max; pressure across the patch")
+        rep.save(profile_compare.make_profiles_figure(comparison["profile"]), "profile_patches.png",
+                 "the wheel and rail profiles at the run's lateral shift, the rigid contact "
+                 "points and the FE patches across them at t")
 
     # Fig. 3: nodes in contact at t (and the difference to the other run)
     if have_patch:

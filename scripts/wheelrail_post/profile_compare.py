@@ -347,3 +347,40 @@ def main(argv=None):
     if a.png:
         figure(a.png, r)
     return 0
+
+
+def make_profiles_figure(r):
+    """The profiles at the run's lateral shift in the track frame (rail top
+    and wheel surface lowered onto it), the rigid contact points, and the FE
+    patch at the instant across them: the lateral extent of each patch's
+    nodes with at least 5 % of p_max, drawn on the rail profile (a matplotlib
+    figure)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    pair, points, P = r["ref"]["pair"], r["ref"]["points"], r["P"]
+    ys = [pt["y"] for pt in points]
+    y = np.linspace(min(ys) - 25 * MM, max(ys) + 25 * MM, 801)
+    lo, hi = pair.overlap()
+    y = y[(y >= lo) & (y <= hi)]
+    fig, ax = plt.subplots(figsize=(9, 4.2))
+    ax.plot(y / MM, pair.rail_z(y) / MM, color="0.3", label="rail (inclined)")
+    ax.plot(y / MM, (pair.wheel_z(y) - pair.dz) / MM, color="tab:blue", label="wheel (lowered)")
+    for k, pt in enumerate(points):
+        ax.plot(pt["y"] / MM, pair.rail_z(np.array([pt["y"]]))[0] / MM, "kx", ms=9,
+                label="rigid contact points" if k == 0 else None)
+    strong = P["pressure"] >= 0.05 * P["pressure"].max()
+    patch = P["patch"] if "patch" in P else np.ones_like(P["y"])
+    colours = ("tab:red", "tab:orange", "tab:green")
+    for k in np.unique(patch[strong]).astype(int):
+        yk = P["y"][strong & (patch == k)] + points[0]["y"]
+        seg = np.linspace(yk.min(), yk.max(), 50)
+        ax.plot(seg / MM, pair.rail_z(seg) / MM, lw=6, alpha=0.6, color=colours[(k - 1) % 3],
+                label="FE patch %d: %.1f mm wide (p >= 5 %% p_max)" % (k, np.ptp(yk) / MM))
+    ax.set_xlabel("y from the rail's centre line, towards the gauge side [mm]")
+    ax.set_ylabel("z [mm]")
+    ax.set_aspect("auto")
+    ax.legend(fontsize=8, loc="lower left")
+    ax.set_title("the patches on the profiles at instant %s" % r["instant"])
+    fig.tight_layout()
+    return fig

@@ -146,6 +146,14 @@ namespace WheelRail
 
 
 
+    std::pair<double, double>
+    GeometryModel::zone_span() const
+    {
+      return {-p.zone_half_width, p.zone_half_width};
+    }
+
+
+
     bool
     GeometryModel::has_wheel() const
     {

@@ -135,6 +135,12 @@ namespace WheelRail
           return profiles.from_files();
         }
 
+        std::pair<double, double>
+        zone_span() const override
+        {
+          return shape.zone_span(p.zone_half_width);
+        }
+
         std::optional<double>
         profile_contact_angle() const override
         {

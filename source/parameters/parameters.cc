@@ -14,6 +14,7 @@
 
 #include <filesystem>
 #include <string>
+#include <tuple>
 
 namespace WheelRail
 {
@@ -46,6 +47,7 @@ namespace WheelRail
       return text.directory_of(section, entry);
     };
     geometry_model = Geometry::GeometryModel::create(problem.geometry, geometry, prm);
+    std::tie(geometry.zone_y_lo, geometry.zone_y_hi) = geometry_model->zone_span();
     material.parse_parameters(prm);
     solver.parse_parameters(prm);
     boundary.parse_parameters(prm);

@@ -318,6 +318,8 @@ namespace WheelRail
       h_min            = prm.get_double("Minimum cell size");
       zone_length      = prm.get_double("Solution zone length");
       zone_half_width  = prm.get_double("Solution zone half width");
+      zone_y_lo        = -zone_half_width;
+      zone_y_hi        = zone_half_width;
       zone_depth       = prm.get_double("Solution zone depth");
       grading          = prm.get_double("Grading");
       refine_wheel     = prm.get_bool("Refine wheel");

@@ -175,6 +175,11 @@ namespace WheelRail
       zone_cells(const types::material_id                         material,
                  const parallel::distributed::Triangulation<dim> &triangulation) const;
 
+      /** The lateral span of the solution zones [m] (by default -Solution
+       *  zone half width .. half width). */
+      virtual std::pair<double, double>
+      zone_span() const;
+
       /** Whether two bodies can touch (Contact/Enabled acts). */
       virtual bool
       has_contact() const = 0;

@@ -143,6 +143,10 @@ namespace WheelRail
     double h_min;
     double zone_length;
     double zone_half_width;
+    /** Lateral span of the solution zones [m]: -half width .. half width,
+     *  widened by the geometry to the zones of every rigid contact point
+     *  (Parameters::parse(), GeometryModel::zone_span()). */
+    double zone_y_lo = 0, zone_y_hi = 0;
     double zone_depth;
     double grading;
     bool   refine_wheel;

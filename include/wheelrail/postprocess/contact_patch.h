@@ -34,13 +34,14 @@ namespace WheelRail
   void
   write_contact_nodes(const SimulatorAccess &access, const std::string &name);
 
-  /** Whether point @p p lies over the solution zone of @p g (|x| <= length
-   *  / 2, |y| <= half width). */
+  /** Whether point @p p lies over the solution zones of @p g (|x| <=
+   *  length / 2, y within the zones' lateral span: |y| <= half width on
+   *  the paper's pair). */
   inline bool
   over_solution_zone(const GeometryParameters &g, const Point<3> &p)
   {
-    return std::abs(p[0]) <= 0.5 * g.zone_length + 1e-9 &&
-           std::abs(p[1]) <= g.zone_half_width + 1e-9;
+    return std::abs(p[0]) <= 0.5 * g.zone_length + 1e-9 && p[1] >= g.zone_y_lo - 1e-9 &&
+           p[1] <= g.zone_y_hi + 1e-9;
   }
 
   /** Whether rail-top node @p m (of master_node_results()) lies in the
