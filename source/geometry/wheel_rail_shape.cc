@@ -269,22 +269,36 @@ namespace WheelRail
 
 
 
+    ProfileReadOptions
+    WheelRailShape::read_options(const ProfileParameters &profiles,
+                                 const std::string       &body,
+                                 const double             centre,
+                                 const double             width) const
+    {
+      const bool         wheel = body == "Wheel";
+      ProfileReadOptions options;
+      options.parameter           = "Geometry/Profiles/" + body + " profile file";
+      options.name                = wheel ? profiles.wheel_file : profiles.rail_file;
+      options.smoothing_tolerance = profiles.smoothing_tolerance;
+      options.mirror              = wheel ? profiles.wheel_flip_y : profiles.rail_flip_y;
+      options.z_down              = wheel ? profiles.wheel_z_down : profiles.rail_z_down;
+      options.y_from              = centre - 0.5 * width;
+      options.y_to                = centre + 0.5 * width;
+      options.max_spacing         = max_spacing_in_cells * p.h_min;
+      return options;
+    }
+
+
+
     void
     WheelRailShape::build_from_files(const ProfileParameters &profiles)
     {
       // both curves in the rail profile's frame
       const double angle =
         profiles.rail_inclination > 0 ? -std::atan(1. / profiles.rail_inclination) : 0.;
-      ProfileReadOptions rail_options;
-      rail_options.parameter           = "Geometry/Profiles/Rail profile file";
-      rail_options.name                = profiles.rail_file;
-      rail_options.smoothing_tolerance = profiles.smoothing_tolerance;
-      rail_options.rotation            = angle;
-      rail_options.mirror              = profiles.rail_flip_y;
-      rail_options.z_down              = profiles.rail_z_down;
-      rail_options.y_from              = profiles.rail_window_centre - 0.5 * p.rail_head_width;
-      rail_options.y_to                = profiles.rail_window_centre + 0.5 * p.rail_head_width;
-      rail_options.max_spacing         = max_spacing_in_cells * p.h_min;
+      ProfileReadOptions rail_options =
+        read_options(profiles, "Rail", profiles.rail_window_centre, p.rail_head_width);
+      rail_options.rotation = angle;
       std::shared_ptr<const ProfileCurve> rail_r;
       if (!profiles.rail_path.empty())
         rail_r = SplineProfile::read(profiles.rail_path, rail_options);
@@ -301,17 +315,9 @@ namespace WheelRail
       const double taping_line =
         profiles.wheel_flip_y ? -profiles.wheel_taping_line : profiles.wheel_taping_line;
       const double shift = profiles.taping_line_position - profiles.lateral_shift - taping_line;
-      ProfileReadOptions wheel_options;
-      wheel_options.parameter           = "Geometry/Profiles/Wheel profile file";
-      wheel_options.name                = profiles.wheel_file;
-      wheel_options.smoothing_tolerance = profiles.smoothing_tolerance;
-      wheel_options.shift_y             = shift;
-      wheel_options.mirror              = profiles.wheel_flip_y;
-      wheel_options.z_down              = profiles.wheel_z_down;
-      wheel_options.y_from =
-        shift + taping_line + profiles.wheel_window_centre - 0.5 * p.tread_width;
-      wheel_options.y_to = shift + taping_line + profiles.wheel_window_centre + 0.5 * p.tread_width;
-      wheel_options.max_spacing = max_spacing_in_cells * p.h_min;
+      ProfileReadOptions wheel_options = read_options(
+        profiles, "Wheel", shift + taping_line + profiles.wheel_window_centre, p.tread_width);
+      wheel_options.shift_y = shift;
       std::shared_ptr<const ProfileCurve> wheel_r;
       if (!profiles.wheel_path.empty())
         wheel_r = SplineProfile::read(profiles.wheel_path, wheel_options);

@@ -167,7 +167,7 @@ namespace WheelRail
                       "laterally at the constant velocity v_y = eta V from the start of "
                       "rolling, y towards the flange (SPEC 10: v the wheel's rigid velocity "
                       "relative to the rail at the contact point, s = n x x; on a contact "
-                      "at angle delta, v_s = v_y cos(delta) + v_z sin(delta)). The axle's "
+                      "at angle delta, v_s = v_y cos(delta) - v_z sin(delta)). The axle's "
                       "lateral guide supplies the force that keeps v_y constant, and its "
                       "work enters the energy balance. Kalker's linear theory: the lateral "
                       "creep force on the wheel is F_y = -G c^2 C22 eta. 0 = none; not "

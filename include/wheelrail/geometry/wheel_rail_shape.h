@@ -186,6 +186,14 @@ namespace WheelRail
       std::vector<RigidContact>           points;
       std::string                         summary;
 
+      /** How the file of @p body ("Wheel" or "Rail") is read: its entries,
+       *  the window of @p width about @p centre (in the rail's frame). */
+      ProfileReadOptions
+      read_options(const ProfileParameters &profiles,
+                   const std::string       &body,
+                   const double             centre,
+                   const double             width) const;
+
       /** Read the files, search the contact and move both curves to O. */
       void
       build_from_files(const ProfileParameters &profiles);
