@@ -178,14 +178,6 @@ namespace WheelRail
 
 
 
-    bool
-    GeometryModel::hertzian_patch() const
-    {
-      return true;
-    }
-
-
-
     std::string
     GeometryModel::description() const
     {

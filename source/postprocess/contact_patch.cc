@@ -284,23 +284,32 @@ namespace WheelRail
                  << fmt(y_min * 1e3, 4) << " to " << fmt(y_max * 1e3, 4) << " mm, peak pressure "
                  << fmt(p_max * 1e-6, 5) << " MPa, peak shear " << fmt(s_max * 1e-6, 5)
                  << " MPa, slip (eq. 5) " << n_slip << " of " << n_contact << " nodes" << std::endl;
-    if (name == "t" && !patch.empty() && !access.parameters.geometry_model->hertzian_patch())
-      access.pcout << "Contact patch at t: the profiles' patch is not Hertz's; its reference is "
-                      "the half-space solution of their gap (scripts/profile_reference.py "
-                   << access.parameters.problem.output_directory << ")" << std::endl;
-    else if (name == "t" && !patch.empty())
+    if (name == "t" && !patch.empty())
+      judge_patch_at_t(patch);
+  }
+
+
+
+  void
+  ContactPatch::judge_patch_at_t(const std::vector<Verification::PatchNode> &patch) const
+  {
+    if (access.parameters.geometry_model->has_profile_files())
       {
-        const Verification::EllipseFit fit = Verification::fit_hertz_ellipse(patch);
-        access.pcout << "Contact patch at t against Hertz at the patch's normal force "
-                     << fmt(fit.force * 1e-3, 5) << " kN" << std::endl;
-        // a rolling patch carries its mesh's discretisation error: judged
-        // by what the convergence study measured at this h
-        Verification::report_hertz_fit(access,
-                                       fit,
-                                       fit.force,
-                                       access.parameters.verification.tolerance,
-                                       access.parameters.geometry.h_min);
+        access.pcout << "Contact patch at t: the profiles' patch is not Hertz's; its reference is "
+                        "the half-space solution of their gap (scripts/profile_reference.py "
+                     << access.parameters.problem.output_directory << ")" << std::endl;
+        return;
       }
+    const Verification::EllipseFit fit = Verification::fit_hertz_ellipse(patch);
+    access.pcout << "Contact patch at t against Hertz at the patch's normal force "
+                 << fmt(fit.force * 1e-3, 5) << " kN" << std::endl;
+    // a rolling patch carries its mesh's discretisation error: judged by
+    // what the convergence study measured at this h
+    Verification::report_hertz_fit(access,
+                                   fit,
+                                   fit.force,
+                                   access.parameters.verification.tolerance,
+                                   access.parameters.geometry.h_min);
   }
 
 

@@ -199,12 +199,6 @@ namespace WheelRail
       virtual double
       rolling_radius() const;
 
-      /** Whether Hertz's solution at contact_radii() describes the rolling
-       *  patch (true by default; false for profiles from files, whose
-       *  reference is the half-space solution of their gap). */
-      virtual bool
-      hertzian_patch() const;
-
       /** What the bodies' shapes are, for the run's summary (lines; empty
        *  by default). */
       virtual std::string

@@ -9,6 +9,7 @@
 
 #include <wheelrail/postprocess/contact_patches.h>
 #include <wheelrail/postprocess/postprocessor.h>
+#include <wheelrail/verification/hertz_patch.h>
 
 #include <array>
 #include <cmath>
@@ -158,6 +159,11 @@ namespace WheelRail
     /** Write the snapshot @p name (t-5.7us, t, t+5.7us) at @p centre. */
     void
     write_snapshot(const std::string &name, const double centre) const;
+
+    /** The patch at t against Hertz (the paper's pair), or where its
+     *  reference is (profiles from files). */
+    void
+    judge_patch_at_t(const std::vector<Verification::PatchNode> &patch) const;
 
     const SimulatorAccess &access;
     /** The patches of a geometry that reports them. */
