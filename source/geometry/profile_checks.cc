@@ -58,7 +58,10 @@ namespace WheelRail
           }
       }
 
-      /** (b - a) x (c - a), the orientation of the triangle a b c. */
+      /** (b - a) x (c - a), the orientation of the triangle a b c: exactly 0
+       *  for a point repeated or collinear in exact arithmetic of the
+       *  differences (this file is compiled without fused multiply-adds,
+       *  CMakeLists.txt: a fused a*b - c*d is not 0 for a*b == c*d). */
       double
       orientation(const ProfilePoint &a, const ProfilePoint &b, const ProfilePoint &c)
       {
@@ -109,16 +112,20 @@ namespace WheelRail
       check_self_intersection(const Points &p, const Context &c)
       {
         const std::size_t n = p.size();
+        // folds first: a fold also touches the segment before, and which of
+        // the two were named first would depend on the last bit of the
+        // orientation
+        for (std::size_t i = 0; i + 2 < n; ++i)
+          if (orientation(p[i], p[i + 1], p[i + 2]) == 0 &&
+              (p[i + 1].y - p[i].y) * (p[i + 2].y - p[i + 1].y) +
+                  (p[i + 1].z - p[i].z) * (p[i + 2].z - p[i + 1].z) <
+                0)
+            c.fail(p[i + 2].line,
+                   "the profile folds back onto itself along the segment of lines " +
+                     std::to_string(p[i].line) + "-" + std::to_string(p[i + 1].line));
         for (std::size_t i = 0; i + 1 < n; ++i)
           {
             const double y0 = std::min(p[i].y, p[i + 1].y), y1 = std::max(p[i].y, p[i + 1].y);
-            if (i + 2 < n && orientation(p[i], p[i + 1], p[i + 2]) == 0 &&
-                (p[i + 1].y - p[i].y) * (p[i + 2].y - p[i + 1].y) +
-                    (p[i + 1].z - p[i].z) * (p[i + 2].z - p[i + 1].z) <
-                  0)
-              c.fail(p[i + 2].line,
-                     "the profile folds back onto itself along the segment of lines " +
-                       std::to_string(p[i].line) + "-" + std::to_string(p[i + 1].line));
             for (std::size_t j = i + 2; j + 1 < n; ++j)
               if (std::max(p[j].y, p[j + 1].y) >= y0 && std::min(p[j].y, p[j + 1].y) <= y1 &&
                   segments_meet(p[i], p[i + 1], p[j], p[j + 1]))
