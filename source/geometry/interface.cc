@@ -217,7 +217,9 @@ namespace WheelRail
     std::optional<double>
     GeometryModel::profile_contact_angle() const
     {
-      return std::nullopt;
+      if (!has_profile_files())
+        return std::nullopt;
+      return rigid_contacts().front().contact_angle;
     }
 
 

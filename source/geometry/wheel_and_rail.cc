@@ -141,14 +141,6 @@ namespace WheelRail
           return shape.zone_span(p.zone_half_width);
         }
 
-        std::optional<double>
-        profile_contact_angle() const override
-        {
-          if (!profiles.from_files())
-            return std::nullopt;
-          return shape.contacts().front().contact_angle;
-        }
-
         std::string
         description() const override
         {

@@ -104,18 +104,13 @@ namespace WheelRail
     {
       return pairs;
     }
-    /** Slave node states of the first pass (replicated on all ranks). */
+    /** Slave node states of pass @p p, the first by default (replicated on
+     *  all ranks). A state in contact carries the force F = normal_force
+     *  normal + tangential_force on its own node: F on the first pass's
+     *  slave body (the wheel) in the first pass, -F in the second, as
+     *  summary() sums them. */
     const std::vector<ContactNodeState> &
-    slave_states() const
-    {
-      return passes.front().slaves;
-    }
-    /** Slave node states of pass @p p (replicated on all ranks). A state in
-     *  contact carries the force F = normal_force normal + tangential_force
-     *  on its own node: F on the first pass's slave body (the wheel) in the
-     *  first pass, -F in the second, as summary() sums them. */
-    const std::vector<ContactNodeState> &
-    slave_states(const unsigned int p) const
+    slave_states(const unsigned int p = 0) const
     {
       return passes[p].slaves;
     }

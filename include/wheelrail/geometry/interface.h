@@ -231,8 +231,9 @@ namespace WheelRail
       /** The contact angle delta [rad] of the main rigid contact
        *  (RigidContact::contact_angle, the rail's normal from z towards +y
        *  for delta > 0) where the shapes come from profile files; none for
-       *  the analytic shapes (delta = 0) and by default. */
-      virtual std::optional<double>
+       *  the analytic shapes (delta = 0): from has_profile_files() and
+       *  rigid_contacts(). */
+      std::optional<double>
       profile_contact_angle() const;
 
       /** Whether the bodies are a block on a plate, the case of the sliding
