@@ -96,6 +96,76 @@ def ref_values(patch):
                 slip=roll["slip_fraction"] if roll else float("nan"))
 
 
+# the creep forces and the spin moment per program patch (statistics)
+PART_QUANTITIES = ("part_fx_fn", "part_fs_fn", "part_mn")
+
+
+def reference_parts(ref):
+    """The reference's forces split as the program splits its patches: each
+    element of a solved group goes to the group's rigid point nearest in
+    track y (the program's patch_of on y), and each part's forces are turned
+    into that point's frame (its contact angle delta_k): a list, per rigid
+    point, of dicts F_n, F_x, F_s [N] and M_n [N m] (the moment about the
+    normal through the part's centre of pressure), or None where no group
+    solved the point's tangential problem."""
+    parts = [None] * len(ref["points"])
+    for patch in ref["patches"]:
+        roll = patch.get("rolling")
+        if patch["grid"] is None or roll is None:
+            continue
+        g, p, q, c = patch["grid"], patch["p"], roll["q"], patch["point"]
+        X, S = np.meshgrid(g.x, g.y, indexing="ij")
+        y = c["y"] + S * math.cos(c["delta"])
+        members = list(patch["group"])
+        near = np.argmin([np.abs(y - ref["points"][i]["y"]) for i in members], axis=0)
+        for j, i in enumerate(members):
+            m = near == j
+            fn = float(p[m].sum() * g.dA)
+            if fn <= 0:
+                continue
+            fx, fs = (float(q[d][m].sum() * g.dA) for d in (0, 1))
+            xc, sc = float((p * X)[m].sum() * g.dA / fn), float((p * S)[m].sum() * g.dA / fn)
+            mn = float((((X - xc) * q[1] - (S - sc) * q[0])[m]).sum() * g.dA)
+            d = c["delta"] - ref["points"][i]["delta"]
+            parts[i] = dict(F_n=-fs * math.sin(d) + fn * math.cos(d), F_x=fx,
+                            F_s=fs * math.cos(d) + fn * math.sin(d), M_n=mn)
+    return parts
+
+
+def fe_parts(run, t, n):
+    """The program's patch forces at time t (statistics 'patch k F_n', F_x,
+    F_s, M_n, the row nearest t): a list of n dicts, or None without those
+    columns (a run that reports no patches)."""
+    names, stats = hc.read_statistics(run)
+    if stats is None or hc.column(names, stats, "patch 1 F_n") is None or not math.isfinite(t):
+        return None
+    row = int(np.argmin(np.abs(hc.column(names, stats, "time") - t)))
+    out = []
+    for k in range(n):
+        cols = [hc.column(names, stats, "patch %d %s " % (k + 1, q)) for q in ("F_n", "F_x", "F_s", "M_n")]
+        out.append(None if cols[0] is None else
+                   dict(zip(("F_n", "F_x", "F_s", "M_n"), (float(c[row]) for c in cols))))
+    return out
+
+
+def part_rows(run, t, ref):
+    """Rows (k, quantity, FE, reference, difference) of F_x / F_n, F_s / F_n
+    (differences) and M_n (ratio - 1) per program patch k."""
+    rp = reference_parts(ref)
+    fp = fe_parts(run, t, len(rp))
+    rows = []
+    if fp is None:
+        return rows
+    for k, (f, r) in enumerate(zip(fp, rp)):
+        if f is None or r is None or f["F_n"] <= 0:
+            continue
+        for q, a, b in (("part_fx_fn", f["F_x"] / f["F_n"], r["F_x"] / r["F_n"]),
+                        ("part_fs_fn", f["F_s"] / f["F_n"], r["F_s"] / r["F_n"]),
+                        ("part_mn", f["M_n"], r["M_n"])):
+            rows.append((k, q, a, b, a / b - 1 if q == "part_mn" else a - b))
+    return rows
+
+
 def compare_run(run, instant="t", case_dir=None, grid=pr.DEFAULT_GRID, log=None, load=None):
     """The FE patch of RUN at INSTANT against the reference at its time:
     dict ref (profile_reference.reference), fe (fe_patches), rows
@@ -117,6 +187,7 @@ def compare_run(run, instant="t", case_dir=None, grid=pr.DEFAULT_GRID, log=None,
         for q in QUANTITIES:
             diff = f[q] - r[q] if q in ("fx_fn", "slip") else f[q] / r[q] - 1
             rows.append((k, q, f[q], r[q], diff))
+    rows += part_rows(run, t, ref)
     return dict(ref=ref, fe=fe, rows=rows, t=t, xc=xc, instant=instant, P=P,
                 seconds=time.time() - t0)
 
@@ -177,7 +248,8 @@ def as_comparison(run, instant="t", grid=pr.DEFAULT_GRID):
 _LABEL = dict(area=("area", "mm^2", 1e6), length=("length along x", "mm", 1e3),
               width=("width along s", "mm", 1e3), p_max=("p_max", "MPa", 1e-6),
               F_N=("F_N", "kN", 1e-3), fx_fn=("F_x / F_N", "-", 1.0),
-              slip=("slip-area fraction", "-", 1.0))
+              slip=("slip-area fraction", "-", 1.0), part_fx_fn=("patch F_x / F_n", "-", 1.0),
+              part_fs_fn=("patch F_s / F_n", "-", 1.0), part_mn=("patch M_n", "N m", 1.0))
 
 
 def point_lines(ref):
@@ -228,7 +300,7 @@ def summary_lines(r):
     for k, q, fe, rv, d in r["rows"]:
         label, unit, scale = _LABEL[q]
         lines.append("%-5d %-20s %6s %12.5g %12.5g %+10.4f%s" % (
-            k, label, unit, fe * scale, rv * scale, d, "  (difference)" if q in ("fx_fn", "slip") else ""))
+            k, label, unit, fe * scale, rv * scale, d, "  (difference)" if q in ("fx_fn", "slip", "part_fx_fn", "part_fs_fn") else ""))
     return lines
 
 
@@ -237,7 +309,8 @@ def write_csv(path, r):
     with atomic_file.replacing(path) as tmp, open(tmp, "w") as f:
         f.write("patch,quantity,fe,reference,difference,clipped\n")
         for k, q, fe, rv, d in r["rows"]:
-            f.write("%d,%s,%.9g,%.9g,%.9g,%d\n" % (k, q, fe, rv, d, r["fe"][k]["clipped"]))
+            clipped = q in QUANTITIES and r["fe"][k]["clipped"]
+            f.write("%d,%s,%.9g,%.9g,%.9g,%d\n" % (k, q, fe, rv, d, clipped))
 
 
 def figure(path, r, title=None):

@@ -41,7 +41,12 @@ towards +y, the flange side; positive phi is Kalker's, a counter-clockwise
 rotation of the wheel relative to the rail seen from the wheel, rolling3d).
 To first order in s, w_x = xi - phi s: Kalker's spin; the exact radius is
 kept because a merged two-point patch spans radii that a linear term
-misses. eta = 0: the run's wheelset has no lateral velocity and no yaw.
+misses. eta is the run's lateral creepage at O at instant t (statistics
+'lateral creepage': the axle's lateral velocity, with yaw, along s), 0 where
+the run does not report it (no lateral creepage, no yaw); every group takes
+it (at a second point of another contact angle that neglects the axle's
+vertical velocity along its s). A side without its file is the paper's
+analytic one (analytic_side), so the paper's pair is a profile pair here too.
 xi at O is the run's creepage at instant t (statistics), (V - omega r_eff) / V
 with the program's effective radius r_eff (printed as "rolling radius" under
 Rolling); a separate group's xi is shifted by -(r_P - r_O) / r_O. r_eff
@@ -98,18 +103,41 @@ def resolve(name, case_dir, run):
                          "directory)" % (name, " or ".join(dirs)))
 
 
+def analytic_side(prm, side, n=1401):
+    """The paper's analytic side of a run without its profile file, as points
+    in the file's conventions [m] over the modelled window: the wheel a
+    cylinder (flat tread over Geometry/Wheel/Tread width about Wheel window
+    centre), the rail the circular crown of Geometry/Rail/Profile radius over
+    Head width about Rail window centre (turned by the inclination in Pair,
+    as the program turns it)."""
+    g = "Geometry/Profiles/%s window centre" % side
+    c = float(prm.get(g, "0"))
+    if side == "Wheel":
+        half = 0.5 * float(prm["Geometry/Wheel/Tread width"])
+        y = np.linspace(c - half, c + half, n)
+        return np.column_stack((y, 0.0 * y))
+    R = float(prm["Geometry/Rail/Profile radius"])
+    half = 0.5 * float(prm["Geometry/Rail/Head width"])
+    y = np.linspace(c - half, c + half, n)
+    return np.column_stack((y, np.sqrt(R * R - y * y) - R))
+
+
 def pair_of(prm, run, case_dir=None):
-    """profiles.Pair of the run (the empty file of a side: the paper's flat
-    tread or crown is not supported here)."""
+    """profiles.Pair of the run; a side without its file is the paper's
+    analytic one (analytic_side), as in the program."""
     g = "Geometry/Profiles/"
-    names = prm.get(g + "Wheel profile file", ""), prm.get(g + "Rail profile file", "")
-    if not all(n.strip() for n in names):
-        raise ReferenceError("the reference needs both a wheel and a rail profile file")
-    wheel, rail = (pf.read_profile(resolve(n, case_dir, run)) for n in names)
-    wheel = as_written(wheel, prm, "Wheel", float(prm.get(g + "Wheel profile taping line", "0")))
-    rail = as_written(rail, prm, "Rail", 0.0)
-    return pf.Pair(wheel, rail, float(prm[g + "Rail inclination"]),
-                   float(prm[g + "Lateral shift"]), float(prm[g + "Taping line position"]),
+    sides = []
+    for side in ("Wheel", "Rail"):
+        name = prm.get(g + side + " profile file", "").strip()
+        if name:
+            p = pf.read_profile(resolve(name, case_dir, run))
+            taping = float(prm.get(g + "Wheel profile taping line", "0")) if side == "Wheel" else 0.0
+            sides.append(as_written(p, prm, side, taping))
+        else:
+            sides.append(analytic_side(prm, side))
+    return pf.Pair(sides[0], sides[1], float(prm.get(g + "Rail inclination", "0")),
+                   float(prm.get(g + "Lateral shift", "0")),
+                   float(prm.get(g + "Taping line position", "0")),
                    float(prm["Geometry/Wheel/Radius"]))
 
 
@@ -398,11 +426,11 @@ def run_load(run, prm, t):
 
 
 def run_creepage(run, t):
-    """The run's rigid creepage and wheel angular velocity at t (statistics;
-    NaN without them)."""
+    """The run's rigid creepage, wheel angular velocity and lateral creepage
+    at t (statistics; NaN without them)."""
     names, stats = hc.read_statistics(run)
     out = []
-    for name in ("creepage", "omega"):
+    for name in ("creepage", "omega", "lateral creepage"):
         col = hc.column(names, stats, name) if stats is not None else None
         out.append(float(np.interp(t, hc.column(names, stats, "time"), col))
                    if col is not None and math.isfinite(t) else float("nan"))
@@ -417,8 +445,6 @@ def reference(run, t, case_dir=None, grid_shape=DEFAULT_GRID, log=None, load=Non
     prm = hc.read_parameters(run)
     if not prm:
         raise ReferenceError("%s has no parameters.prm" % run)
-    if not is_profile_run(prm):
-        raise ReferenceError("%s is not a profile run (no Geometry/Profiles files)" % run)
     pair = pair_of(prm, run, case_dir)
     points = rigid_points(pair, prm)
     printed = printed_points(log)
@@ -428,17 +454,19 @@ def reference(run, t, case_dir=None, grid_shape=DEFAULT_GRID, log=None, load=Non
         load, src = run_load(run, prm, t)
     E, nu = float(prm["Material/Young's modulus"]), float(prm["Material/Poisson's ratio"])
     patches = normal_reference(pair, points, load, E, nu, grid_shape)
-    xi, omega = run_creepage(run, t)
+    xi, omega, eta = run_creepage(run, t)
     xi = xi if math.isfinite(xi) else 0.0
+    if not math.isfinite(eta):  # not reported: no lateral creepage, no yaw
+        eta = 0.0
     speed, r_O = float(prm["Wheelset/Rolling speed"]), points[0]["r"]
     if not math.isfinite(omega):
         omega = speed * (1 - xi) / r_O
     out = dict(pair=pair, points=points, printed=printed, check=check, load=load, load_source=src,
-               patches=patches, law="frictionless", xi=xi, omega=omega,
+               patches=patches, law="frictionless", xi=xi, eta=eta, omega=omega,
                xi_undeformed=1.0 - omega * r_O / speed, r_eff=speed * (1 - xi) / omega)
     if tangential and prm.get("Contact/Friction law", "none") != "none":
         law, _, out["law"] = hc.law_of(prm)
         for patch in patches:
             if patch["grid"] is not None:
-                patch["rolling"] = tangential_reference(pair, patch, law, speed, xi, r_O)
+                patch["rolling"] = tangential_reference(pair, patch, law, speed, xi, r_O, eta)
     return out

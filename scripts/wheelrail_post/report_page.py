@@ -191,11 +191,13 @@ def profile_rows(r):
     rows = []
     for k, q, fe, ref, d in r["rows"]:
         label, unit, scale = pc._LABEL[q]
-        f = r["fe"][k]
-        note = pc.expectation(q, f)
+        part = q in pc.PART_QUANTITIES  # k: the program's patch, not the reference's
+        note = ("the reference split at the program's patch boundary, in its frame" if part
+                else pc.expectation(q, r["fe"][k]))
         rows.append(["patch %d: %s [%s]" % (k, label, unit), num("%.4g" % (fe * scale)),
                      num("%.4g" % (ref * scale)),
-                     num("%+.3f" % d if q in ("fx_fn", "slip") else "%+.1f %%" % (100 * d)),
+                     num("%+.3f" % d if q in ("fx_fn", "slip", "part_fx_fn", "part_fs_fn")
+                         else "%+.1f %%" % (100 * d)),
                      "<td class='info'>%s</td>" % html.escape(note)])
     return rows
 
