@@ -117,14 +117,10 @@ def fail(message):
 
 def write_case(case, path, outdir, sets):
     """PATH including CASE with the entries of @p sets ({subsection: {entry: value}})."""
-    lines = ["# written by scripts/creep_curve.py", "include %s" % os.path.abspath(case),
-             "subsection Problem", "  set Output directory = %s" % os.path.abspath(outdir), "end"]
-    for section, entries in sets.items():
-        lines.append("subsection %s" % section)
-        lines += ["  set %s = %s" % kv for kv in entries.items()]
-        lines.append("end")
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    sweep.write_variant(case, path, outdir, {"%s/%s" % (section, entry): value
+                                             for section, entries in sets.items()
+                                             for entry, value in entries.items()},
+                        "scripts/creep_curve.py")
 
 
 def static_load(prm):

@@ -2,33 +2,40 @@
 
 Usage:
     scripts/creep_study.py CASE.prm [CASE.prm ...] [--etas LIST] [--set ENTRY=VALUE ...]
-                           [--np N] [--out DIR] [--grid NXxNY] [--window MM]
-                           [--wheelrail PATH] [--plot-only]
+                           [--rolling MM] [--np N] [--out DIR] [--grid NXxNY]
+                           [--window MM] [--wheelrail PATH] [--plot-only]
 
-Each CASE (a rolling case with a patch at instant t: the profile cases, the
-paper's cases) is run once per lateral creepage eta of --etas (default: the
-case's own), with the longitudinal creepage held at 0 at O (Wheelset/Initial
-creepage = 0, Creepage control time = 1 s) and the wheel's rigid motion on
-its web damped at 8000 1/s (Run-up damping, as scripts/creep_curve.py: it
-makes the lateral force steady within a few tens of mm of rolling); --set
-changes any further entry of every run (e.g. --set
-"Geometry/Mesh/Minimum cell size=0.00066" --set "Time integration/Time
-step=5.2e-8" for a coarser study). The spin comes from the profiles (a coned
-tread, the contact angle of S1002 on 60E1): its study is a list of cases.
+Each CASE (a rolling case with profile files, so that the statistics carry
+the patch columns) is run once per lateral creepage eta of --etas (default:
+the case's own), with the longitudinal creepage held at 0 at O
+(Wheelset/Initial creepage = 0, Creepage control time = 1 s, no driving
+torque) and the wheel's rigid motion on its web damped at 8000 1/s (Run-up
+damping, as scripts/creep_curve.py); --set changes any further entry of
+every run (e.g. --set "Geometry/Mesh/Minimum cell size=0.00132" --set "Time
+integration/Time step=1.04e-7" for a coarser study). The spin comes from the
+profiles (a coned tread, the contact angle of S1002 on 60E1): its study is a
+list of cases.
 
-Every run is compared at instant t with the half-space solution of the same
-gap, load and creepages (scripts/profile_reference.py: the run's xi, eta and
+The lateral force relaxes through the wheel's lateral deflection (a time
+constant of about 3 ms at 140 km/h): it is steady only after some 350 mm of
+rolling. --rolling MM starts the wheel MM before O (the rail 100 mm further
+back) and ends the run 1.5 mm past O; the shipped profile cases roll 450 mm
+(prm/lateral_run_in.prm).
+
+Every run is compared with the half-space solution of the same gap, load and
+creepages at instant t (scripts/profile_reference.py: the run's xi, eta and
 the profiles' phi), split at the program's patch boundaries
 (profile_compare.reference_parts): per patch k, F_s / F_n and F_x / F_n
 (differences) and the spin moment M_n about the patch's centre of pressure
-(ratio). The lateral force of the whole contact, F_s / F_n of all patches
-in the main patch's frame, is compared too, with its steadiness (the spread
-of the main patch's F_s / F_n over the last --window mm before t). DIR
-(default results/creep_study) then holds:
+(ratio), the FE's as means over the last --window mm (default 20) before t.
+The lateral force of the whole contact, F_s / F_n of all patches in the
+main patch's frame, is compared too; the drift (the main patch's F_s / F_n
+over the window's second half minus its first half) says whether the run
+was steady. DIR (default results/creep_study) then holds:
 
   creep_study.csv   one row per run and patch: case, eta, phi, xi, patch, F_n,
                     F_s/F_n, F_x/F_n, M_n (FE and reference), F_s/F_n of the
-                    contact (FE, reference), spread
+                    contact (FE, reference), drift
   creep_study.png   F_s / F_n against eta and M_n against phi, FE beside the
                     reference
   CASE_eta_K.prm, CASE_eta_K/  the runs
@@ -55,21 +62,11 @@ COLUMNS = ("case", "eta", "phi", "xi", "patch", "F_n_N", "fe_Fs_over_Fn", "ref_F
            "ref_contact_Fs_over_Fn", "fe_Fs_over_Fn_drift")
 
 
+WHO = "scripts/creep_study.py"
+
+
 def fail(message):
     sys.exit("creep_study.py: " + message)
-
-
-def write_case(case, path, outdir, sets):
-    """PATH including CASE with the entries of @p sets ({"Section/Sub/Entry": value})."""
-    lines = ["# written by scripts/creep_study.py", "include %s" % os.path.abspath(case),
-             "subsection Problem", "  set Output directory = %s" % os.path.abspath(outdir), "end"]
-    for entry, value in sets.items():
-        path_parts = entry.split("/")
-        lines += ["subsection %s" % s for s in path_parts[:-1]]
-        lines.append("  set %s = %s" % (path_parts[-1], value))
-        lines += ["end"] * (len(path_parts) - 1)
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
 
 
 def in_frame(parts, points, k0=0):
@@ -182,7 +179,7 @@ def rolling_start(case, args, sets, name):
     rolling speed from a dry run of the case with @p sets)."""
     dry = os.path.join(args.out, name + "_dry")
     if not os.path.exists(os.path.join(dry, "parameters.prm")):
-        write_case(case, dry + ".prm", dry, dict(sets, **{"Problem/Dry run": "true"}))
+        sweep.write_variant(case, dry + ".prm", dry, dict(sets, **{"Problem/Dry run": "true"}), WHO)
         sweep.run_case(dry + ".prm", 1, args.wheelrail, dry + ".log", "creep_study.py")
     speed = float(hc.read_parameters(dry)["Wheelset/Rolling speed"])
     d = args.rolling * 1e-3
@@ -240,7 +237,7 @@ def main():
             if not args.plot_only:
                 if eta is not None:
                     mine["Wheelset/Lateral creepage"] = "%.6g" % eta
-                write_case(case, run + ".prm", run, mine)
+                sweep.write_variant(case, run + ".prm", run, mine, WHO)
                 print("creep_study.py: running %s on %d rank(s)" % (run + ".prm", args.np), flush=True)
                 start = time.time()
                 sweep.run_case(run + ".prm", args.np, args.wheelrail, run + ".log", "creep_study.py")

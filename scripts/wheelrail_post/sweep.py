@@ -66,6 +66,21 @@ def case_name(law, mu):
     return "%s_mu%02d" % (law, round(mu * 100))
 
 
+def write_variant(case, path, outdir, entries, who):
+    """PATH: a parameter file that includes CASE, writes into OUTDIR and sets
+    @p entries ({"Section/Subsection/Entry": value}, in order); @p who
+    names the writing script in its first line."""
+    lines = ["# written by %s" % who, "include %s" % os.path.abspath(case),
+             "subsection Problem", "  set Output directory = %s" % os.path.abspath(outdir), "end"]
+    for entry, value in entries.items():
+        parts = entry.split("/")
+        lines += ["subsection %s" % p for p in parts[:-1]]
+        lines.append("  set %s = %s" % (parts[-1], value))
+        lines += ["end"] * (len(parts) - 1)
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 def write_case(base, out, law, mu, state=None):
     """The case file of one run; with @p state the runs share one static
     start there (Wheelset/Static start state: the first run solves and
