@@ -398,11 +398,22 @@ def main(argv=None):
                     help="vertical wheel load [N] (default: the statistics' F_N at the instant)")
     ap.add_argument("--csv", default=None, help="write the comparison rows here")
     ap.add_argument("--png", default=None, help="write the figure here")
+    ap.add_argument("--xi-for", type=float, default=None, metavar="FX_FN",
+                    help="print instead the creepage xi at which the reference gives F_x / F_N = "
+                    "FX_FN at the static load (RUN may be a dry run), for a case that holds it")
     a = ap.parse_args(argv)
     grid = hc.parse_grid(a.grid)
     if grid is None:
         print("profile_reference.py: error: --grid: NXxNY, 4 <= NX <= 512, NY odd", file=sys.stderr)
         return 2
+    if a.xi_for is not None:
+        try:
+            xi, achieved = pr.creepage_for(a.run, a.xi_for, a.case_dir, grid, a.load)
+        except (pr.ReferenceError, ValueError, KeyError, OSError) as e:
+            print("profile_reference.py: error: %s" % e, file=sys.stderr)
+            return 2
+        print("xi %.4e gives F_x / F_N %.4f (half-space reference, grid %d x %d)" % ((xi, achieved) + grid))
+        return 0
     log = a.log if a.log is not None else find_log(a.run)
     try:
         r = compare_run(a.run, a.instant, a.case_dir, grid, log, a.load)

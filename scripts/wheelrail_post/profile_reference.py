@@ -470,3 +470,40 @@ def reference(run, t, case_dir=None, grid_shape=DEFAULT_GRID, log=None, load=Non
             if patch["grid"] is not None:
                 patch["rolling"] = tangential_reference(pair, patch, law, speed, xi, r_O, eta)
     return out
+
+
+def creepage_for(run, target, case_dir=None, grid_shape=DEFAULT_GRID, load=None, eta=0.0):
+    """The longitudinal creepage xi at O at which the reference of RUN's
+    profiles, load (default Static solve/Axle load) and law gives
+    F_x / F_N = target over all its patches (bisection over [-0.05, 0.05];
+    driving: target > 0 at xi < 0), for a case that holds it
+    (Wheelset/Initial creepage). RUN needs only its parameters.prm (a dry
+    run). Returns (xi, achieved F_x / F_N)."""
+    prm = hc.read_parameters(run)
+    if not prm:
+        raise ReferenceError("%s has no parameters.prm" % run)
+    pair = pair_of(prm, run, case_dir)
+    points = rigid_points(pair, prm)
+    load = float(prm["Static solve/Axle load"]) if load is None else load
+    E, nu = float(prm["Material/Young's modulus"]), float(prm["Material/Poisson's ratio"])
+    patches = [p for p in normal_reference(pair, points, load, E, nu, grid_shape)
+               if p["grid"] is not None]
+    law, _, _ = hc.law_of(prm)
+    speed, r_O = float(prm["Wheelset/Rolling speed"]), points[0]["r"]
+
+    def ratio(xi):
+        sols = [tangential_reference(pair, p, law, speed, xi, r_O, eta) for p in patches]
+        return sum(s["F_x"] for s in sols) / sum(s["F_N"] for s in sols)
+
+    lo, hi = -0.05, 0.05  # ratio falls with xi
+    f_lo, f_hi = ratio(lo) - target, ratio(hi) - target
+    if f_lo * f_hi > 0:
+        raise ReferenceError("F_x / F_N = %g is not reached for |xi| <= 0.05 (from %.4f to %.4f)"
+                             % (target, f_lo + target, f_hi + target))
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        f_mid = ratio(mid) - target
+        if abs(hi - lo) < 1e-7:
+            break
+        lo, f_lo, hi = (mid, f_mid, hi) if f_mid * f_lo > 0 else (lo, f_lo, mid)
+    return 0.5 * (lo + hi), ratio(0.5 * (lo + hi))
