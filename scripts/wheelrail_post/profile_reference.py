@@ -103,21 +103,23 @@ def resolve(name, case_dir, run):
                          "directory)" % (name, " or ".join(dirs)))
 
 
-def analytic_side(prm, side, n=1401):
+def analytic_side(prm, side, n=2001, beyond=0.02):
     """The paper's analytic side of a run without its profile file, as points
-    in the file's conventions [m] over the modelled window: the wheel a
-    cylinder (flat tread over Geometry/Wheel/Tread width about Wheel window
-    centre), the rail the circular crown of Geometry/Rail/Profile radius over
-    Head width about Rail window centre (turned by the inclination in Pair,
-    as the program turns it)."""
+    in the file's conventions [m]: the wheel a cylinder (a flat tread), the
+    rail the circular crown of Geometry/Rail/Profile radius (turned by the
+    inclination in Pair, as the program turns it), over the modelled window
+    (Tread width about Wheel window centre, Head width about Rail window
+    centre) and @p beyond further on each side, so that the gap table of a
+    patch near the window's edge is defined (the program's body ends at the
+    window: a patch that reaches it is not the half-space's)."""
     g = "Geometry/Profiles/%s window centre" % side
     c = float(prm.get(g, "0"))
     if side == "Wheel":
-        half = 0.5 * float(prm["Geometry/Wheel/Tread width"])
+        half = 0.5 * float(prm["Geometry/Wheel/Tread width"]) + beyond
         y = np.linspace(c - half, c + half, n)
         return np.column_stack((y, 0.0 * y))
     R = float(prm["Geometry/Rail/Profile radius"])
-    half = 0.5 * float(prm["Geometry/Rail/Head width"])
+    half = min(0.5 * float(prm["Geometry/Rail/Head width"]) + beyond, 0.5 * R)
     y = np.linspace(c - half, c + half, n)
     return np.column_stack((y, np.sqrt(R * R - y * y) - R))
 

@@ -37,7 +37,6 @@ head width 72 mm of the standard then follows as a check.
 import argparse
 import math
 import os
-import sys
 
 import numpy as np
 
