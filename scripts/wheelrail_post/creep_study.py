@@ -73,35 +73,23 @@ def in_frame(parts, points, k0=0):
     """F_s / F_n of all PARTS (each in its point's frame) in point k0's frame."""
     fs = fn = 0.0
     for part, c in zip(parts, points):
-        if part is None:
-            continue
-        d = c["delta"] - points[k0]["delta"]
-        fs += part["F_s"] * math.cos(d) + part["F_n"] * math.sin(d)
-        fn += -part["F_s"] * math.sin(d) + part["F_n"] * math.cos(d)
+        if part is not None:
+            s, n = pc.turned(part["F_s"], part["F_n"], c["delta"] - points[k0]["delta"])
+            fs, fn = fs + s, fn + n
     return fs / fn if fn > 0 else float("nan")
 
 
-def window_parts(run, t, n, window):
-    """The program's patch forces (statistics 'patch k F_n', F_x, F_s, M_n)
-    averaged over the last WINDOW [m] of rolling before t, and the drift of
-    the main patch's F_s / F_n: its mean over the window's second half minus
-    that over its first half. (list of n dicts or None, drift)."""
+def drift(run, t, window):
+    """The main patch's F_s / F_n over the last WINDOW [m] of rolling before
+    the statistics row nearest t: its mean over the window's second half
+    minus that over its first half."""
     names, stats = hc.read_statistics(run)
-    if stats is None or hc.column(names, stats, "patch 1 F_n") is None:
-        return None, float("nan")
     x, time_ = hc.column(names, stats, "wheel x"), hc.column(names, stats, "time")
     end = x[int(np.argmin(np.abs(time_ - t)))]
     sel = (x >= end - window) & (x <= end)
-    if sel.sum() < 4:
-        fail("%s: fewer than 4 statistics rows in the last %g mm before t" % (run, window * 1e3))
-    out = []
-    for k in range(n):
-        cols = [hc.column(names, stats, "patch %d %s " % (k + 1, q)) for q in ("F_n", "F_x", "F_s", "M_n")]
-        out.append(None if cols[0] is None else
-                   dict(zip(("F_n", "F_x", "F_s", "M_n"), (float(c[sel].mean()) for c in cols))))
     r = (hc.column(names, stats, "patch 1 F_s ") / hc.column(names, stats, "patch 1 F_n "))[sel]
     half = r.size // 2
-    return out, float(r[half:].mean() - r[:half].mean())
+    return float(r[half:].mean() - r[:half].mean())
 
 
 def rows_of(case, run, grid, window, case_dir):
@@ -113,9 +101,13 @@ def rows_of(case, run, grid, window, case_dir):
     t, _ = hc.patch_header(path)
     ref = pr.reference(run, t, case_dir, grid, pc.find_log(run))
     rp = pc.reference_parts(ref)
-    fp, drift = window_parts(run, t, len(rp), window)
+    try:
+        fp = pc.fe_parts(run, t, len(rp), window)
+    except ValueError as e:
+        fail(str(e))
     if fp is None:
         fail("%s: the statistics have no patch columns" % run)
+    moved = drift(run, t, window)
     contact = (in_frame(fp, ref["points"]), in_frame(rp, ref["points"]))
     rows = []
     for k, (f, r) in enumerate(zip(fp, rp)):
@@ -127,7 +119,7 @@ def rows_of(case, run, grid, window, case_dir):
                          ref_Fs_over_Fn=r["F_s"] / r["F_n"], fe_Fx_over_Fn=f["F_x"] / f["F_n"],
                          ref_Fx_over_Fn=r["F_x"] / r["F_n"], fe_Mn_Nm=f["M_n"], ref_Mn_Nm=r["M_n"],
                          fe_contact_Fs_over_Fn=contact[0], ref_contact_Fs_over_Fn=contact[1],
-                         fe_Fs_over_Fn_drift=drift))
+                         fe_Fs_over_Fn_drift=moved))
     return rows
 
 

@@ -100,6 +100,15 @@ def ref_values(patch):
 PART_QUANTITIES = ("part_fx_fn", "part_fs_fn", "part_mn")
 
 
+PART_FORCES = ("F_n", "F_x", "F_s", "M_n")
+
+
+def turned(fs, fn, d):
+    """(F_s, F_n) of a force given as (fs, fn) in the frame of contact angle
+    delta, in the frame of contact angle delta - d (turned about x by d)."""
+    return fs * math.cos(d) + fn * math.sin(d), -fs * math.sin(d) + fn * math.cos(d)
+
+
 def reference_parts(ref):
     """The reference's forces split as the program splits its patches: each
     element of a solved group goes to the group's rigid point nearest in
@@ -126,25 +135,32 @@ def reference_parts(ref):
             fx, fs = (float(q[d][m].sum() * g.dA) for d in (0, 1))
             xc, sc = float((p * X)[m].sum() * g.dA / fn), float((p * S)[m].sum() * g.dA / fn)
             mn = float((((X - xc) * q[1] - (S - sc) * q[0])[m]).sum() * g.dA)
-            d = c["delta"] - ref["points"][i]["delta"]
-            parts[i] = dict(F_n=-fs * math.sin(d) + fn * math.cos(d), F_x=fx,
-                            F_s=fs * math.cos(d) + fn * math.sin(d), M_n=mn)
+            F_s, F_n = turned(fs, fn, c["delta"] - ref["points"][i]["delta"])
+            parts[i] = dict(F_n=F_n, F_x=fx, F_s=F_s, M_n=mn)
     return parts
 
 
-def fe_parts(run, t, n):
-    """The program's patch forces at time t (statistics 'patch k F_n', F_x,
-    F_s, M_n, the row nearest t): a list of n dicts, or None without those
-    columns (a run that reports no patches)."""
+def fe_parts(run, t, n, window=0.0):
+    """The program's patch forces (statistics 'patch k F_n', F_x, F_s, M_n):
+    the row nearest time t, or with window > 0 [m] their means over the last
+    window of rolling before that row; a list of n dicts (None for a patch
+    without columns), or None without them (a run that reports no patches)."""
     names, stats = hc.read_statistics(run)
     if stats is None or hc.column(names, stats, "patch 1 F_n") is None or not math.isfinite(t):
         return None
     row = int(np.argmin(np.abs(hc.column(names, stats, "time") - t)))
+    if window > 0:
+        x = hc.column(names, stats, "wheel x")
+        sel = (x >= x[row] - window) & (x <= x[row])
+        if sel.sum() < 4:
+            raise ValueError("%s: fewer than 4 statistics rows in the last %g mm before t"
+                             % (run, window * 1e3))
     out = []
     for k in range(n):
-        cols = [hc.column(names, stats, "patch %d %s " % (k + 1, q)) for q in ("F_n", "F_x", "F_s", "M_n")]
+        cols = [hc.column(names, stats, "patch %d %s " % (k + 1, q)) for q in PART_FORCES]
         out.append(None if cols[0] is None else
-                   dict(zip(("F_n", "F_x", "F_s", "M_n"), (float(c[row]) for c in cols))))
+                   dict(zip(PART_FORCES, (float(c[sel].mean() if window > 0 else c[row])
+                                          for c in cols))))
     return out
 
 
