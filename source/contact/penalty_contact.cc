@@ -297,6 +297,7 @@ namespace WheelRail
     // the averaged nodal normals and the face bounds of this evaluation are
     // computed where compute_slaves() first needs them
     ++evaluation;
+    ++timing.evaluations;
     evaluate_passes(dt, advance, clock);
     scatter_forces(f);
     if (advance)
@@ -336,24 +337,24 @@ namespace WheelRail
   PenaltyContact::track_candidate_motion()
   {
     // In one pass over the candidates (replicated positions: the same on
-    // every rank): the largest motion of a candidate slave or a corner of
-    // its faces since the last evaluation, for select_slaves(), and whether
-    // one moved too far since the search (a rebuild at the next step).
+    // every rank): the motion of each candidate slave and corner of its
+    // faces since the last evaluation, for select_slaves(), and whether one
+    // moved too far since the search (a rebuild at the next step).
     const bool   motion_known = active_x_previous.size() == active_nodes.size() && resume_valid;
     const double limit        = prm.rebuild_fraction * prm.search_margin;
-    double       largest      = 0;
     bool         moved_far    = false;
     active_x_previous.resize(active_nodes.size());
+    node_motion.resize(node_dof.size());
     for (unsigned int k = 0; k < active_nodes.size(); ++k)
       {
-        const Point<dim> &x = node_x[active_nodes[k]];
-        largest             = std::max(largest, x.distance_square(active_x_previous[k]));
-        moved_far = moved_far || x.distance_square(node_x_search[active_nodes[k]]) > limit * limit;
+        const unsigned int n = active_nodes[k];
+        const Point<dim>  &x = node_x[n];
+        if (motion_known)
+          node_motion[n] = x.distance(active_x_previous[k]);
+        moved_far = moved_far || x.distance_square(node_x_search[n]) > limit * limit;
         active_x_previous[k] = x;
       }
-    if (motion_known)
-      approach_motion += 2. * std::sqrt(largest);
-    else
+    if (!motion_known)
       resume_valid = false;
     need_search = need_search || moved_far;
   }
@@ -369,6 +370,8 @@ namespace WheelRail
     for (Pass &pass : passes)
       {
         select_slaves(pass, advance, advance && resume_valid && !every_slave);
+        timing.candidates += pass.candidate_slaves.size();
+        timing.computed += pass.evaluated.size();
         compute_slaves(pass, dt, advance);
         timing.slaves += lap(clock);
         if (n_ranks > 1)
@@ -376,7 +379,7 @@ namespace WheelRail
             exchange_states(pass, advance);
             timing.exchange += lap(clock);
           }
-        set_resume_motion(pass, advance);
+        set_clearance(pass, advance);
       }
     resume_valid = advance;
     pairs.clear();

@@ -45,35 +45,54 @@ namespace WheelRail
   // is at least g from the surface of its candidate faces, and at least
   // (1 - Rebuild fraction) m from every face that is not a candidate
   // (approach_trigger.cc). The distance of a point from a bilinear face
-  // changes by at most the motion of the point plus the largest motion of
-  // the face's corners, and approach_motion sums twice the largest motion
-  // of an active node over the evaluations since. While it has grown by
-  // less than half of d = min(g, (1 - Rebuild fraction) m), the slave is
-  // still more than d / 2 from every face, and a face that compute_slaves()
-  // left out for a gap below -margin stays left out (it requires such faces
-  // to be more than d beyond -margin before it marks the slave). So the
-  // slave is separated, with the state separate() gave it but for the gap,
-  // which stays as it was found (only write_contact_nodes() prints it, at
-  // the run's last step, where evaluate_every_slave() has every slave
-  // computed). Its position and previous position are updated as for any
-  // slave. The forces, and everything else, are those of a computation at
-  // every step.
+  // changes in one step by at most the motion of the point plus the largest
+  // motion of the face's corners (the face's point of the same face
+  // coordinates moves by a convex combination of its corners' motions).
+  // Pass::clearance starts at d / 2, d = min(g, (1 - Rebuild fraction) m),
+  // and loses at every step the slave's motion plus the largest corner
+  // motion over its listed faces. While it is positive, the slave is still
+  // more than d / 2 from each of those faces, and a face that
+  // compute_slaves() left out for a gap below -margin stays left out (it
+  // requires such faces to be more than d beyond -margin before it marks
+  // the slave). So the slave is separated, with the state separate() gave
+  // it but for the gap, which stays as it was found (only
+  // write_contact_nodes() prints it, at the run's last step, where
+  // evaluate_every_slave() has every slave computed). Its position and
+  // previous position are updated as for any slave. The forces, and
+  // everything else, are those of a computation at every step.
   void
   PenaltyContact::select_slaves(Pass &pass, const bool advance, const bool skip_separated)
   {
-    if (pass.resume_motion.size() != pass.slaves.size())
-      pass.resume_motion.assign(pass.slaves.size(), -std::numeric_limits<double>::infinity());
+    if (pass.clearance.size() != pass.slaves.size())
+      pass.clearance.assign(pass.slaves.size(), -std::numeric_limits<double>::infinity());
+    if (skip_separated)
+      {
+        pass.face_motion.resize(pass.faces.size());
+        for (const unsigned int f : pass.candidate_faces)
+          {
+            const unsigned int *v = pass.faces[f].node;
+            pass.face_motion[f]   = std::max(std::max(node_motion[v[0]], node_motion[v[1]]),
+                                           std::max(node_motion[v[2]], node_motion[v[3]]));
+          }
+      }
     pass.evaluated.clear();
     for (unsigned int c = 0; c < pass.candidate_slaves.size(); ++c)
       {
         const unsigned int s = pass.candidate_slaves[c];
-        if (skip_separated && approach_motion < pass.resume_motion[s])
+        if (skip_separated && pass.clearance[s] > 0)
           {
-            ContactNodeState &state = pass.slaves[s];
-            state.x                 = node_x[pass.slave_node[s]];
-            if (advance)
-              state.x_previous = state.x;
-            continue;
+            double corners = 0;
+            for (unsigned int k = pass.face_offsets[c]; k < pass.face_offsets[c + 1]; ++k)
+              corners = std::max(corners, pass.face_motion[pass.face_lists[k]]);
+            pass.clearance[s] -= node_motion[pass.slave_node[s]] + corners;
+            if (pass.clearance[s] > 0)
+              {
+                ContactNodeState &state = pass.slaves[s];
+                state.x                 = node_x[pass.slave_node[s]];
+                if (advance)
+                  state.x_previous = state.x;
+                continue;
+              }
           }
         pass.evaluated.push_back(c);
       }
@@ -83,15 +102,15 @@ namespace WheelRail
 
 
   void
-  PenaltyContact::set_resume_motion(Pass &pass, const bool advance)
+  PenaltyContact::set_clearance(Pass &pass, const bool advance)
   {
     const double reach = kept_distance();
     for (unsigned int k = 0; k < pass.evaluated.size(); ++k)
       {
         const unsigned int      s     = pass.candidate_slaves[pass.evaluated[k]];
         const ContactNodeState &state = pass.slaves[s];
-        pass.resume_motion[s]         = (advance && pass.separated_inside[k] && state.gap > 0) ?
-                                          approach_motion + 0.5 * std::min(state.gap, reach) :
+        pass.clearance[s]             = (advance && pass.separated_inside[k] && state.gap > 0) ?
+                                          0.5 * std::min(state.gap, reach) :
                                           -std::numeric_limits<double>::infinity();
       }
   }

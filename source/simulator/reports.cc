@@ -197,6 +197,7 @@ namespace WheelRail
              "and scattered, not 64): "
           << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl;
     print_split(pcout, by_rank, contact != nullptr);
+    report_partition();
     // The wall time of single steps (this machine's noise: on a shared
     // host the same step's time varies by tens of per cent, and with
     // several ranks each step waits for the slowest): fastest, median and

@@ -165,6 +165,9 @@ namespace WheelRail
     double slaves    = 0; ///< closest points, penalty and friction of this rank's block
     double exchange  = 0; ///< the blocks' states to every rank
     double forces    = 0; ///< totals, pairs and the nodal forces
+    /** Evaluations (add_forces() calls), the candidate slaves they had and
+     *  the slaves they computed (all ranks together, all passes). */
+    unsigned long evaluations = 0, candidates = 0, computed = 0;
   };
 
   /** What PenaltyContact::gather_positions() sends and receives for a set

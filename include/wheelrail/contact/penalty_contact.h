@@ -282,10 +282,14 @@ namespace WheelRail
       std::vector<FaceBound>                  bounds;
       std::vector<ContactGeometry::FaceFrame> frames;
       std::vector<unsigned long>              bound_evaluation;
-      /** Per slave: the value of approach_motion up to which it stays
-       *  separated (select_slaves()); -infinity: compute it at the next
-       *  evaluation. The same on every rank. */
-      std::vector<double> resume_motion;
+      /** Per slave: how far [m] its listed faces and it may still move
+       *  towards each other before it can touch one (select_slaves());
+       *  -infinity: compute it at the next evaluation. The same on every
+       *  rank. */
+      std::vector<double> clearance;
+      /** Per face: the largest motion of its corners in the last step
+       *  (select_slaves() workspace; candidate faces only). */
+      std::vector<double> face_motion;
       /** The positions in candidate_slaves computed at this evaluation. */
       std::vector<unsigned int> evaluated;
       /** Per entry of evaluated: found separated with its closest point
@@ -507,10 +511,10 @@ namespace WheelRail
                  const Point<dim>   &x_prev,
                  const double        k,
                  const double        dt);
-    /** After the states of all ranks are in: Pass::resume_motion of the
+    /** After the states of all ranks are in: Pass::clearance of the
      *  slaves computed. */
     void
-    set_resume_motion(Pass &pass, const bool advance);
+    set_clearance(Pass &pass, const bool advance);
     /** Every rank computed its share of the candidates: gather all. */
     void
     exchange_states(Pass &pass, const bool advance);
@@ -568,11 +572,11 @@ namespace WheelRail
     };
     std::vector<TriggerNode> trigger_nodes;             ///< ascending local DoFs
     bool                     step_motion_known = false; ///< TriggerNode::dx is of the last step
-    /** The sum over the evaluations since the last search of twice the
-     *  largest motion of an active node since the evaluation before [m]. */
-    double                  approach_motion = 0;
+    /** Per contact node: its motion [m] since the evaluation before
+     *  (active nodes; track_candidate_motion()). */
+    std::vector<double> node_motion;
     std::vector<Point<dim>> active_x_previous; ///< node_x of active_nodes at the last evaluation
-    /** Pass::resume_motion holds (no search, restart or static evaluation
+    /** Pass::clearance holds (no search, restart or static evaluation
      *  since it was set). */
     bool         resume_valid      = false;
     bool         every_slave       = false; ///< evaluate_every_slave()

@@ -155,6 +155,12 @@ namespace WheelRail
                   const double         output_seconds,
                   const unsigned long  n_steps,
                   std::vector<double> &step_seconds) const;
+    /** How the mesh is split between the ranks, printed with the timing:
+     *  cells and family cells per rank, ghost nodes per owned node, the
+     *  ranks each exchanges with, and the contact's share per rank
+     *  (partition_report.cc). */
+    void
+    report_partition() const;
     /** Every rank's times of the parts of the steps and of the contact,
      *  on rank 0 (empty on the others). */
     std::vector<std::vector<double>>
