@@ -106,7 +106,7 @@ run_bench() {
   [ ${#counts[@]} -eq 0 ] && counts=(1 2)
   mkdir -p bench
   local csv=bench/results.csv
-  local header=date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms,triad_2core_gb_s,bytes_per_element_step,case
+  local header=date,commit,cpu,ranks,cells,dofs,steps,wall_s,ns_per_element_step,elements_s,contact_s,update_s,communication_s,energies_s,output_s,peak_memory_mb,projected_full_run_h,fastest_step_ms,median_step_ms,p95_step_ms,triad_2core_gb_s,bytes_per_element_step,case,element_gflop_s,fma_peak_percent,element_gb_s,triad_percent
   if [ ! -f "$csv" ]; then
     echo "$header" > "$csv"
   elif [ "$(head -1 "$csv")" != "$header" ]; then
@@ -121,12 +121,19 @@ run_bench() {
   # bandwidth on 2 cores, which turns ns per element-step into the bytes per
   # element-step that a host of that bandwidth moves in that time (the measure
   # that compares across hosts)
-  local limits triad
+  local limits triad triad1 fma1 fma2 kernel flops
   limits=$("$top/build/machine_limits" 2)
   echo "$limits"
   triad=$(echo "$limits" | sed -n 's/.*STREAM triad.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
-  # the element loop's floor on this host: its family batch on cached data
-  "$top/build/element_kernel"
+  triad1=$(echo "$limits" | sed -n 's/.*STREAM triad[^:]*: \([0-9.]*\) GB.s on 1 core.*/\1/p')
+  fma1=$(echo "$limits" | sed -n 's/.*FMA chains[^:]*: \([0-9.]*\) GFLOP.s on 1 core.*/\1/p')
+  fma2=$(echo "$limits" | sed -n 's/.*FMA chains.* on 1 core, \([0-9.]*\) on 2.*/\1/p')
+  # the element loop's floor on this host: its family batch on cached data,
+  # and the kernel's operations per cell (damped and undamped, double and
+  # single geometry)
+  kernel=$("$top/build/element_kernel")
+  echo "$kernel"
+  flops=($(echo "$kernel" | sed -n 's/^Floating-point operations[^:]*://p' | grep -o '[0-9][0-9]*'))
   # one synchronisation's own cost, apart from the ranks waiting for each other
   mpirun -np 2 "$top/build/mpi_exchange"
   local case dir rows=0
@@ -142,17 +149,52 @@ run_bench() {
       else
         "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step'
       fi
-      local row ns bytes
+      local row ns bytes loop
       row=$(grep -v '^#' "$dir/timing.csv" | tail -1)
       ns=$(echo "$row" | cut -d, -f6)
       bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
       echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
-      echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes,$case" >> "$csv"
+      loop=$(element_loop_rates "$case" "$np" "$row")
+      echo "run.sh: element loop of prm/bench_$case.prm on $np rank(s): $(echo "$loop" | cut -d, -f5)"
+      echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes,$case,$(echo "$loop" | cut -d, -f1-4)" >> "$csv"
       rows=$((rows + 1))
     done
   done
   echo "run.sh: benchmark figures appended to $top/$csv"
   { head -1 "$csv"; tail -n "$rows" "$csv"; } | cut -d, -f4- | column -s, -t || true
+  # the cases side by side: the paper mesh (refined, damped) and the block
+  # (unrefined, undamped)
+  echo "run.sh: the cases side by side (ns per element-step on all ranks; the element loop's share of the host's limits)"
+  { echo "case,ranks,ns_per_element_step,elements_ns_per_cell_step_and_rank,element_gflop_s,fma_peak_percent,element_gb_s,triad_percent"
+    tail -n "$rows" "$csv" | awk -F, '{ printf "%s,%s,%s,%.1f,%s,%s,%s,%s\n", $23, $4, $9, $10 / ($5 * $7) * 1e9, $24, $25, $26, $27 }' |
+      sort -t, -k1,1 -k2,2n; } | column -s, -t || true
+}
+
+# The element loop of a benchmark row against the host's limits: the
+# kernel's counted operations per cell (element_kernel: damped or not,
+# double or single geometry, as the case runs) times cells and steps over
+# the slowest rank's element time, against the FMA peak of that many cores
+# (1: the one-core figure; more: the 2-core figure per 2 cores), and the
+# bytes the loop must move per cell (its element data, 312 B double or
+# 168 B single, and per DoF u, v and the force read and written, 8 B each;
+# undamped: no v) against the triad of as many cores. Prints
+# "GFLOP/s,% of FMA peak,GB/s,% of triad,sentence". Uses flops, fma1,
+# fma2, triad1, triad of run_bench().
+element_loop_rates() {
+  local case=$1 np=$2 row=$3 damped=1 single=0
+  [ "$case" = block ] && damped=0
+  { [ "$case" = paper_single ] || [ "$case" = profiles ]; } && single=1
+  local f=${flops[$((2 * single + 1 - damped))]}
+  echo "$row" | awk -F, -v f="$f" -v np="$np" -v damped="$damped" -v single="$single" \
+    -v fma1="$fma1" -v fma2="$fma2" -v tr1="$triad1" -v tr2="$triad" '{
+      cells = $2; dofs = $3; steps = $4; el = $7
+      peak = (np == 1) ? fma1 : fma2 * np / 2; bw = (np == 1) ? tr1 : tr2 * np / 2
+      gflops = f * cells * steps / el / 1e9
+      bytes = (single ? 168 : 312) + (damped ? 32 : 24) * dofs / cells
+      gbs = bytes * cells * steps / el / 1e9
+      printf "%.1f,%.1f,%.1f,%.1f,", gflops, 100 * gflops / peak, gbs, 100 * gbs / bw
+      printf "%d operations per cell (counted), %.1f GFLOP/s = %.0f %% of the FMA peak of %d core(s); %.0f bytes per cell, %.1f GB/s = %.0f %% of the triad\n",
+        f, gflops, 100 * gflops / peak, np, bytes, gbs, 100 * gbs / bw }'
 }
 
 # The comment block at the top of this file, from its second line.

@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 using namespace WheelRail::ElementKernel;
@@ -129,6 +130,84 @@ namespace
     return power;
   }
 
+  // The kernel's floating-point operations per cell, counted: the kernel
+  // run on one lane of a number type that counts its +, -, * and / (an FMA
+  // is two, as in the host's FMA peak). The kernel is straight-line code,
+  // so the count is that of every call.
+  unsigned long flop_count = 0;
+  struct Counted
+  {
+    double x;
+    double &
+    operator[](unsigned int)
+    {
+      return x;
+    }
+  };
+#define WHEELRAIL_COUNTED_OP(op)                                \
+  Counted operator op(const Counted a, const Counted b)         \
+  {                                                             \
+    ++flop_count;                                               \
+    return {a.x op b.x};                                        \
+  }                                                             \
+  Counted operator op(const double a, const Counted b)          \
+  {                                                             \
+    ++flop_count;                                               \
+    return {a op b.x};                                          \
+  }                                                             \
+  Counted operator op(const Counted a, const double b)          \
+  {                                                             \
+    ++flop_count;                                               \
+    return {a.x op b};                                          \
+  }                                                             \
+  Counted &operator op##=(Counted &a, const Counted b)          \
+  {                                                             \
+    ++flop_count;                                               \
+    a.x op## = b.x;                                             \
+    return a;                                                   \
+  }
+  WHEELRAIL_COUNTED_OP(+)
+  WHEELRAIL_COUNTED_OP(-)
+  WHEELRAIL_COUNTED_OP(*)
+  WHEELRAIL_COUNTED_OP(/)
+#undef WHEELRAIL_COUNTED_OP
+  Counted
+  operator-(const Counted a)
+  {
+    return {-a.x};
+  }
+} // namespace
+
+namespace WheelRail::ElementKernel
+{
+  template <>
+  Counted
+  load_widened<Counted>(const float *p)
+  {
+    return {double(*p)};
+  }
+} // namespace WheelRail::ElementKernel
+
+namespace
+{
+  template <template <typename> class Data, bool damping>
+  unsigned long
+  kernel_flops(const Row &row)
+  {
+    alignas(64) double ub[8 * 3 * W] = {}, vb[8 * 3 * W] = {}, fb[8 * 3 * W] = {};
+    const double      *data = std::is_same_v<Data<Counted>, DoubleData<Counted>> ?
+                                row.double_data.data() :
+                                row.single_data.data();
+    flop_count              = 0;
+    batch_forces<damping>(Data<Counted>{data},
+                          1.2e11,
+                          8e10,
+                          BatchField<Counted>{ub},
+                          BatchField<Counted>{vb},
+                          fb);
+    return flop_count;
+  }
+
   template <typename Phase>
   double
   best_ns_per_cell(const Row &row, const unsigned int repetitions, const Phase &phase)
@@ -222,5 +301,13 @@ main(int argc, char **argv)
     scatter(f);
   });
   std::printf("  (checksum %g)\n", sink + row.F[7]);
+  // counted on one lane (an FMA as two operations): what the fractions of
+  // the host's FMA peak in ./run.sh bench are computed from
+  std::printf("Floating-point operations of the kernel per cell (counted): damped %lu and "
+              "undamped %lu with double geometry, damped %lu and undamped %lu with single\n",
+              kernel_flops<DoubleData, true>(row),
+              kernel_flops<DoubleData, false>(row),
+              kernel_flops<SingleData, true>(row),
+              kernel_flops<SingleData, false>(row));
   return 0;
 }
