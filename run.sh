@@ -155,7 +155,7 @@ run_bench() {
       bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
       echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
       loop=$(element_loop_rates "$case" "$np" "$row")
-      echo "run.sh: element loop of prm/bench_$case.prm on $np rank(s): $(echo "$loop" | cut -d, -f5)"
+      echo "run.sh: element loop of prm/bench_$case.prm on $np rank(s): $(echo "$loop" | cut -d, -f5-)"
       echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes,$case,$(echo "$loop" | cut -d, -f1-4)" >> "$csv"
       rows=$((rows + 1))
     done
