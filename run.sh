@@ -14,7 +14,9 @@
 #                               counts N given); figures appended to bench/results.csv,
 #                               after the machine's measured FMA peak and memory bandwidth
 #                               and the element loop's family batch on cached data (build/
-#                               element_kernel) and an exchange between 2 ranks (build/mpi_exchange)
+#                               element_kernel) and an exchange between 2 ranks (build/mpi_exchange);
+#                               per case the element loop's share of the FMA peak and the triad,
+#                               and the cases side by side
 #   ./run.sh plot DIR [OTHER]   the paper's figures and report.html from a run's output
 #                               directory (and the comparison with a second run) into DIR/plots,
 #                               with the half-space solution of the patch's load and traction
