@@ -56,9 +56,11 @@ namespace WheelRail
         const double        e = t.evaluations;
         pcout << "    contact per step: " << fmt(t.candidates / e, 6) << " candidate slaves, "
               << fmt(t.computed / e, 6) << " computed (" << fmt(100. * t.computed / t.candidates, 3)
-              << " %), " << fmt(t.computed / e / n_ranks, 6) << " per rank; "
-              << 2 + 2 * contact->n_passes()
-              << " collectives (approach bound, positions, per pass gaps and states)" << std::endl;
+              << " %), " << fmt(t.computed / e / n_ranks, 6) << " per rank";
+        if (n_ranks > 1)
+          pcout << "; " << 2 + 2 * contact->n_passes()
+                << " collectives (approach bound, positions, per pass gaps and states)";
+        pcout << std::endl;
       }
   }
 } // namespace WheelRail
