@@ -145,22 +145,22 @@ namespace
     }
   };
 #define WHEELRAIL_COUNTED_OP(op)                                \
-  Counted operator op(const Counted a, const Counted b)         \
+  inline Counted operator op(const Counted a, const Counted b)  \
   {                                                             \
     ++flop_count;                                               \
     return {a.x op b.x};                                        \
   }                                                             \
-  Counted operator op(const double a, const Counted b)          \
+  inline Counted operator op(const double a, const Counted b)   \
   {                                                             \
     ++flop_count;                                               \
     return {a op b.x};                                          \
   }                                                             \
-  Counted operator op(const Counted a, const double b)          \
+  inline Counted operator op(const Counted a, const double b)   \
   {                                                             \
     ++flop_count;                                               \
     return {a.x op b};                                          \
   }                                                             \
-  Counted &operator op##=(Counted &a, const Counted b)          \
+  inline Counted &operator op##=(Counted &a, const Counted b)   \
   {                                                             \
     ++flop_count;                                               \
     a.x op## = b.x;                                             \
@@ -171,7 +171,7 @@ namespace
   WHEELRAIL_COUNTED_OP(*)
   WHEELRAIL_COUNTED_OP(/)
 #undef WHEELRAIL_COUNTED_OP
-  Counted
+  inline Counted
   operator-(const Counted a)
   {
     return {-a.x};
