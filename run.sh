@@ -156,7 +156,7 @@ run_bench() {
       ns=$(echo "$row" | cut -d, -f6)
       bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
       echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
-      loop=$(element_loop_rates "$case" "$np" "$row")
+      loop=$(element_loop_rates "$dir/parameters.prm" "$np" "$row")
       echo "run.sh: element loop of prm/bench_$case.prm on $np rank(s): $(echo "$loop" | cut -d, -f5-)"
       echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes,$case,$(echo "$loop" | cut -d, -f1-4)" >> "$csv"
       rows=$((rows + 1))
@@ -174,7 +174,8 @@ run_bench() {
 
 # The element loop of a benchmark row against the host's limits: the
 # kernel's counted operations per cell (element_kernel: damped or not,
-# double or single geometry, as the case runs) times cells and steps over
+# double or single geometry, as the run's parameters.prm records
+# Damping model and Element geometry precision) times cells and steps over
 # the slowest rank's element time, against the FMA peak of that many cores
 # (1: the one-core figure; more: the 2-core figure per 2 cores), and the
 # bytes the loop must move per cell (its element data, 312 B double or
@@ -183,9 +184,9 @@ run_bench() {
 # "GFLOP/s,% of FMA peak,GB/s,% of triad,sentence". Uses flops, fma1,
 # fma2, triad1, triad of run_bench().
 element_loop_rates() {
-  local case=$1 np=$2 row=$3 damped=1 single=0
-  [ "$case" = block ] && damped=0
-  { [ "$case" = paper_single ] || [ "$case" = profiles ]; } && single=1
+  local prm=$1 np=$2 row=$3 damped=1 single=0
+  grep -Eq '^ *set Damping model *= *none( |$)' "$prm" && damped=0
+  grep -Eq '^ *set Element geometry precision *= *single( |$)' "$prm" && single=1
   local f=${flops[$((2 * single + 1 - damped))]}
   echo "$row" | awk -F, -v f="$f" -v np="$np" -v damped="$damped" -v single="$single" \
     -v fma1="$fma1" -v fma2="$fma2" -v tr1="$triad1" -v tr2="$triad" '{
