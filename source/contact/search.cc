@@ -174,6 +174,20 @@ namespace WheelRail
 
 
 
+  std::pair<unsigned int, unsigned int>
+  PenaltyContact::n_candidates() const
+  {
+    std::pair<unsigned int, unsigned int> n(0, 0);
+    for (const Pass &pass : passes)
+      {
+        n.first += pass.candidate_slaves.size();
+        n.second += pass.face_lists.size();
+      }
+    return n;
+  }
+
+
+
   std::vector<unsigned int>
   PenaltyContact::query_candidates(const Pass &pass)
   {

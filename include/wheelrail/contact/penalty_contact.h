@@ -181,16 +181,7 @@ namespace WheelRail
     /** Candidate slaves and candidate slave-face pairs of the last search
      *  (all passes). */
     std::pair<unsigned int, unsigned int>
-    n_candidates() const
-    {
-      std::pair<unsigned int, unsigned int> n(0, 0);
-      for (const Pass &pass : passes)
-        {
-          n.first += pass.candidate_slaves.size();
-          n.second += pass.face_lists.size();
-        }
-      return n;
-    }
+    n_candidates() const;
     /** Searches so far that the approach bound (contact/approach_trigger.cc)
      *  called for, and no other trigger. */
     unsigned int
