@@ -46,11 +46,13 @@ namespace WheelRail
       std::uint64_t first = 0;
       if (size >= std::streamoff(sizeof(first)))
         file.read(reinterpret_cast<char *>(&first), sizeof(first));
-      if (first == magic_version_1 || first == magic_version_2 || first == magic_version_3)
+      if (first == magic_version_1 || first == magic_version_2 || first == magic_version_3 ||
+          first == magic_version_4)
         return "the checkpoint file '" + name + "' has an older format (" +
                (first == magic_version_1 ? "no checksum, no parameter record" :
                 first == magic_version_2 ? "no contact-patch window means" :
-                                           "no friction state") +
+                first == magic_version_3 ? "no friction state" :
+                                           "no sampled nodal damping") +
                ") that this wheelrail cannot resume: run the case again from the start";
       if (size < std::streamoff(sizeof(first)) || first != magic)
         return "'" + name + "' is not a wheelrail checkpoint file";

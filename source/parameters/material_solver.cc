@@ -110,6 +110,20 @@ namespace WheelRail
                       "beta_e = 2 COEF/omega_e per element (SPEC 2); "
                       "'Rayleigh': classical C = beta K with beta in seconds; "
                       "'none'.");
+    prm.declare_entry("Damping form",
+                      "strain rate",
+                      Patterns::Selection("strain rate|nodal field"),
+                      "How the explicit step evaluates the Damping model [-]. "
+                      "'strain rate': the viscous stress beta_e C : dE/dt of "
+                      "each element, from its velocities. 'nodal field': the "
+                      "internal force at w = u + beta_n v, beta_n the smallest "
+                      "beta_e of the node's cells, which equals beta_e C : dE/dt "
+                      "to first order and also damps the hourglass modes; the "
+                      "force loop reads one nodal field instead of two (the "
+                      "undamped kernel on w). Its dissipation is sampled at the "
+                      "statistics steps, v . (f_int(w) - f_int(u)), and "
+                      "integrated by the trapezoidal rule "
+                      "(doc/notes/damping_nodal_field.md).");
     prm.declare_entry("Stiffness damping coefficient",
                       "1e-4",
                       Patterns::Double(0, 1),
@@ -151,6 +165,7 @@ namespace WheelRail
     courant_factor                = prm.get_double("Courant factor");
     hourglass_coefficient         = prm.get_double("Hourglass coefficient");
     damping_model                 = damping_model_names.parse(prm.get("Damping model"));
+    damping_form                  = damping_form_names.parse(prm.get("Damping form"));
     stiffness_damping_coefficient = prm.get_double("Stiffness damping coefficient");
     rayleigh_beta                 = prm.get_double("Rayleigh beta");
     gravity                       = get_vector(prm, "Gravity");

@@ -362,6 +362,9 @@ namespace WheelRail
       pcout << " (COEF " << fmt(parameters.solver.stiffness_damping_coefficient) << ")";
     else if (solver->damping_model() == DampingModel::rayleigh)
       pcout << " (beta " << fmt(parameters.solver.rayleigh_beta) << " s)";
+    if (solver->damping_model() != DampingModel::none &&
+        parameters.solver.damping_form == DampingForm::nodal_field)
+      pcout << ", from the nodal field u + beta_n v";
     pcout << std::endl;
     if (parameters.solver.single_precision_geometry)
       pcout << "  element geometry             : single precision (force loop)" << std::endl;

@@ -432,4 +432,35 @@ namespace WheelRail
     // padding lanes point at node 0 with zero volume: they produce zero force
     // and are never scattered
   }
+
+
+
+  void
+  ElasticOperator::smallest_cell_beta(VectorType &beta) const
+  {
+    // +inf where no cell of this rank touches the DoF; the owner takes the
+    // smallest of all ranks' values (compress with min), then the ghosts
+    beta.reinit(vector_partitioner);
+    const std::size_t n_local =
+      vector_partitioner->locally_owned_size() + vector_partitioner->n_ghost_indices();
+    std::fill(beta.begin(), beta.begin() + n_local, std::numeric_limits<double>::infinity());
+    for (unsigned int c = 0; c < n_cells; ++c)
+      {
+        const unsigned int batch = c / W, lane = c % W;
+        const double       beta_e =
+          batch_data[(std::size_t(batch) * Field::n_fields + Field::beta) * W + lane];
+        for (unsigned int a = 0; a < 8; ++a)
+          {
+            const unsigned int idx = batch_nodes[(std::size_t(batch) * 8 + a) * W + lane];
+            for (unsigned int d = 0; d < dim; ++d)
+              beta.local_element(idx + d) = std::min(beta.local_element(idx + d), beta_e);
+          }
+      }
+    beta.compress(VectorOperation::min);
+    // an owned DoF of no cell at all (none in a valid mesh) is not damped
+    for (unsigned int i = 0; i < beta.locally_owned_size(); ++i)
+      if (!std::isfinite(beta.local_element(i)))
+        beta.local_element(i) = 0;
+    beta.update_ghost_values();
+  }
 } // namespace WheelRail

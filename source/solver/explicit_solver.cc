@@ -63,6 +63,15 @@ namespace WheelRail
                                            "x,y,z,t",
                                            "Boundary conditions/Applied force");
 
+    nodal_damping_active = prm.solver.damping_form == DampingForm::nodal_field &&
+                           damping_model() != DampingModel::none;
+    if (nodal_damping_active)
+      {
+        nodal_damping.setup(*this);
+        w.reinit(vector_partitioner);
+        f_u.reinit(vector_partitioner);
+      }
+
     nodal_update_prepared = false;
     t                     = 0;
     n_steps               = 0;
@@ -103,6 +112,18 @@ namespace WheelRail
       const ScopedTime timer(times.elements);
       power = element_forces(u_in, v_in, f_out, f_is_zero, strain);
     }
+    add_contact_and_compress(u_in, f_out, with_contact, advance);
+    return power;
+  }
+
+
+
+  void
+  ExplicitSolver::add_contact_and_compress(const VectorType &u_in,
+                                           VectorType       &f_out,
+                                           const bool        with_contact,
+                                           const bool        advance)
+  {
     if (with_contact && contact != nullptr)
       {
         const ScopedTime timer(times.contact);
@@ -114,7 +135,24 @@ namespace WheelRail
     }
     const ScopedTime timer(times.communication);
     f_out.compress(VectorOperation::add);
-    return power;
+  }
+
+
+
+  void
+  ExplicitSolver::nodal_damped_forces(StrainEnergies *strain)
+  {
+    {
+      const ScopedTime timer(times.elements);
+      nodal_damping.damped_displacement(u, v, w);
+      element_forces(w, nullptr, f, f_cleared);
+      if (strain)
+        {
+          element_forces(u, nullptr, f_u, false, strain);
+          nodal_damping.sample(t, NodalDamping::power(v, f, f_u));
+        }
+    }
+    add_contact_and_compress(u, f, true, true);
   }
 
 
@@ -202,8 +240,12 @@ namespace WheelRail
     // the strain energies at t_n come from the force pass over the cells
     const bool     damping = damping_model() != DampingModel::none;
     StrainEnergies strain;
-    const double   power = assemble_forces(
-      u, damping ? &v : nullptr, f, true, true, f_cleared, energies ? &strain : nullptr);
+    double         power = 0; // of the strain-rate form; the nodal one is sampled
+    if (nodal_damping_active)
+      nodal_damped_forces(energies ? &strain : nullptr);
+    else
+      power = assemble_forces(
+        u, damping ? &v : nullptr, f, true, true, f_cleared, energies ? &strain : nullptr);
     if (energies)
       {
         energies->internal            = strain.internal;
@@ -435,7 +477,8 @@ namespace WheelRail
     const double half     = terms.first ? 0. : 0.5;
     const double local[7] = {terms.kinetic,
                              terms.gravity_work,
-                             damping_dissipation + half * terms.h * terms.damping_power,
+                             damping_dissipation + half * terms.h * terms.damping_power +
+                               (nodal_damping_active ? nodal_damping.dissipation() : 0.),
                              boundary_work + half * terms.work,
                              energies.internal,
                              energies.hourglass,

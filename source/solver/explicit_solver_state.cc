@@ -168,6 +168,7 @@ namespace WheelRail
     ar.pod(n_steps);
     ar.pod(damping_dissipation);
     ar.pod(boundary_work);
+    nodal_damping.serialize(ar);
     std::vector<double> states;
     if (!Archive::is_loading)
       for (const auto &p : prescribed)

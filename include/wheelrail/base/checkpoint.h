@@ -36,15 +36,17 @@ namespace WheelRail
 {
   namespace Checkpoint
   {
-    /** First 8 bytes of a rank file of the current format ("whlrchp4"). */
-    constexpr std::uint64_t magic = 0x77686c7263687034ull;
+    /** First 8 bytes of a rank file of the current format ("whlrchp5"). */
+    constexpr std::uint64_t magic = 0x77686c7263687035ull;
     /** ... of the formats before: without the checksum and parameter
      *  record ("whlrchp1"); without the contact patch's window means
      *  ("whlrchp2"); without the friction state of the contact nodes
-     *  ("whlrchp3"). */
+     *  ("whlrchp3"); without the sampled dissipation of the nodal damping
+     *  ("whlrchp4"). */
     constexpr std::uint64_t magic_version_1 = 0x77686c7263687031ull;
     constexpr std::uint64_t magic_version_2 = 0x77686c7263687032ull;
     constexpr std::uint64_t magic_version_3 = 0x77686c7263687033ull;
+    constexpr std::uint64_t magic_version_4 = 0x77686c7263687034ull;
     /** Last 8 bytes of a complete rank file ("whlrend2"). */
     constexpr std::uint64_t end_marker = 0x77686c72656e6432ull;
     /** Bytes of the trailer: payload size, CRC-32 (as 8 bytes), end marker. */

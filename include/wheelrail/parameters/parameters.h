@@ -43,6 +43,16 @@ namespace WheelRail
   inline constexpr SelectionNames<DampingModel, 3> damping_model_names{
     {{"none", "stiffness", "Rayleigh"}}};
 
+  /** Time integration/Damping form: how the explicit step evaluates the
+   *  stiffness damping of the Damping model (SPEC 2). */
+  enum class DampingForm
+  {
+    strain_rate, ///< the viscous stress beta_e C : dE/dt in each element
+    nodal_field  ///< the internal force at w = u + beta_n v, beta_n per node
+  };
+  inline constexpr SelectionNames<DampingForm, 2> damping_form_names{
+    {{"strain rate", "nodal field"}}};
+
   /** Problem/Mode: the explicit run or one of the static runs. */
   enum class RunMode
   {
@@ -224,6 +234,7 @@ namespace WheelRail
     double       courant_factor;
     double       hourglass_coefficient;
     DampingModel damping_model;
+    DampingForm  damping_form;
     double       stiffness_damping_coefficient;
     double       rayleigh_beta;
     Tensor<1, 3> gravity;

@@ -136,6 +136,13 @@ namespace WheelRail
                 const types::material_id                                 material,
                 VectorType                                              &x) const;
 
+    /** The damping coefficient of the nodal form (Damping form = nodal
+     *  field) per DoF: beta_n, the smallest beta_e [s] of the cells around
+     *  the node over all ranks (no cell is damped more than its beta_e);
+     *  on every locally relevant DoF, ghosted. Collective. */
+    void
+    smallest_cell_beta(VectorType &beta) const;
+
     /** Stable step C min_e(L_e/c) with the damping reduction [s]. */
     double
     stable_time_step() const

@@ -16,6 +16,7 @@
 #include <wheelrail/solver/boundary_conditions.h>
 #include <wheelrail/solver/elastic_operator.h>
 #include <wheelrail/solver/energies.h>
+#include <wheelrail/solver/nodal_damping.h>
 #include <wheelrail/solver/nodal_update.h>
 #include <wheelrail/solver/rigid_body_coupling.h>
 #include <wheelrail/solver/step_times.h>
@@ -206,6 +207,20 @@ namespace WheelRail
                     const bool        advance,
                     const bool        f_is_zero = false,
                     StrainEnergies   *strain    = nullptr);
+    /** The part of assemble_forces() after the element forces: the
+     *  contact's forces at @p u (if @p with_contact), condensed and
+     *  compressed. */
+    void
+    add_contact_and_compress(const VectorType &u,
+                             VectorType       &f,
+                             const bool        with_contact,
+                             const bool        advance);
+    /** With Damping form = nodal field: f = f_int(w) - f_contact(u),
+     *  w = u + beta_n v, contact advanced; with @p strain, the strain
+     *  energies at u and a sample of the damping power (a second force
+     *  pass at u). */
+    void
+    nodal_damped_forces(StrainEnergies *strain);
     /** Applied forces at t_n into f; returns their work over the first
      *  half of the step (velocity at t_{n-1/2}). */
     double
@@ -275,6 +290,12 @@ namespace WheelRail
     RigidBodyCoupling             *rigid_body = nullptr;
 
     VectorType u, v, f, v_old;
+    /** Damping form = nodal field: its beta_n and sampled dissipation
+     *  (active if @p nodal_damping_active), w = u + beta_n v and the
+     *  force pass at u of the statistics steps. */
+    NodalDamping nodal_damping;
+    bool         nodal_damping_active = false;
+    VectorType   w, f_u;
     /** f is zero (the update of the last step cleared it behind itself:
      *  the next step's assembly need not). */
     bool          f_cleared           = false;
