@@ -175,25 +175,31 @@ run_bench() {
 # The element loop of a benchmark row against the host's limits: the
 # kernel's counted operations per cell (element_kernel: damped or not,
 # double or single geometry, as the run's parameters.prm records
-# Damping model and Element geometry precision) times cells and steps over
-# the slowest rank's element time, against the FMA peak of that many cores
-# (1: the one-core figure; more: the 2-core figure per 2 cores), and the
-# bytes the loop must move per cell (its element data, 312 B double or
-# 168 B single, and per DoF u, v and the force read and written, 8 B each;
-# undamped: no v) against the triad of as many cores. Prints
+# Damping model, Damping form and Element geometry precision) times cells
+# and steps over the slowest rank's element time, against the FMA peak of
+# that many cores (1: the one-core figure; more: the 2-core figure per 2
+# cores), and the bytes the loop must move per cell (its element data, 312 B
+# double or 168 B single, and per DoF u, v and the force read and written,
+# 8 B each; undamped: no v; Damping form = nodal field: the undamped kernel
+# on w, 24 B, plus the pass that forms w = u + beta v, 32 B) against the
+# triad of as many cores. Prints
 # "GFLOP/s,% of FMA peak,GB/s,% of triad,sentence". Uses flops, fma1,
 # fma2, triad1, triad of run_bench().
 element_loop_rates() {
-  local prm=$1 np=$2 row=$3 damped=1 single=0
+  local prm=$1 np=$2 row=$3 damped=1 single=0 nodal=0
   grep -Eq '^ *set Damping model *= *none( |$)' "$prm" && damped=0
   grep -Eq '^ *set Element geometry precision *= *single( |$)' "$prm" && single=1
-  local f=${flops[$((2 * single + 1 - damped))]}
-  echo "$row" | awk -F, -v f="$f" -v np="$np" -v damped="$damped" -v single="$single" \
+  # the nodal form runs the undamped kernel (on w = u + beta v)
+  if [ "$damped" = 1 ] && grep -Eq '^ *set Damping form *= *nodal field( |$)' "$prm"; then
+    nodal=1
+  fi
+  local f=${flops[$((2 * single + 1 - damped + nodal))]}
+  echo "$row" | awk -F, -v f="$f" -v np="$np" -v damped="$damped" -v single="$single" -v nodal="$nodal" \
     -v fma1="$fma1" -v fma2="$fma2" -v tr1="$triad1" -v tr2="$triad" '{
       cells = $2; dofs = $3; steps = $4; el = $7
       peak = (np == 1) ? fma1 : fma2 * np / 2; bw = (np == 1) ? tr1 : tr2 * np / 2
       gflops = f * cells * steps / el / 1e9
-      bytes = (single ? 168 : 312) + (damped ? 32 : 24) * dofs / cells
+      bytes = (single ? 168 : 312) + (nodal ? 56 : damped ? 32 : 24) * dofs / cells
       gbs = bytes * cells * steps / el / 1e9
       printf "%.1f,%.1f,%.1f,%.1f,", gflops, 100 * gflops / peak, gbs, 100 * gbs / bw
       printf "%d operations per cell (counted), %.1f GFLOP/s = %.0f %% of the FMA peak of %d core(s); %.0f bytes per cell, %.1f GB/s = %.0f %% of the triad\n",
