@@ -46,15 +46,6 @@ namespace
     Parameters::declare_parameters(prm);
     parameters.parse(prm, "nodal_damping_01_case.prm");
   }
-
-  double
-  norm(const VectorType &x)
-  {
-    double s = 0;
-    for (unsigned int i = 0; i < x.locally_owned_size(); ++i)
-      s += x.local_element(i) * x.local_element(i);
-    return std::sqrt(s);
-  }
 } // namespace
 
 int
@@ -154,7 +145,7 @@ main(int argc, char **argv)
           VectorType difference = nodal_force;
           difference -= rate_force;
           const double power_error = std::abs(power - exact) / exact;
-          const double force_error = norm(difference) / norm(rate_force);
+          const double force_error = difference.l2_norm() / rate_force.l2_norm();
           if (!strained)
             {
               char ratios[2][32] = {"", ""};
