@@ -164,8 +164,10 @@ def run_variants(args, variants):
         if os.path.exists(os.path.join(out, "patch_t.csv")):
             print(f"{label}: reusing {out}")
             continue
-        os.makedirs(out, exist_ok=True)
-        prm = os.path.join(out, "case.prm")
+        # the case file and the screen log lie beside the output directory:
+        # the program refuses a directory that holds files no run wrote
+        os.makedirs(args.work, exist_ok=True)
+        prm = out + ".prm"
         with open(prm, "w") as f:
             f.write(f"include {os.path.abspath(args.base)}\n"
                     f"subsection Problem\n  set Output directory = {out}\nend\n"
@@ -179,7 +181,7 @@ def run_variants(args, variants):
         print(f"{label}: running h = {h} m, dt = {dt} s"
               + (f", xi_0 = {xi0}" if xi0 is not None else "")
               + "".join(f", {path} = {value}" for path, value in sets), flush=True)
-        with open(os.path.join(out, "screen.log"), "w") as log:
+        with open(out + ".log", "w") as log:
             subprocess.run(["mpirun", "-np", str(args.np), binary, prm], stdout=log,
                            stderr=subprocess.STDOUT, env=env, check=True)
 
