@@ -162,6 +162,19 @@ namespace WheelRail
   }
 
 
+  std::vector<unsigned int>
+  ElasticOperator::constrained_local_dofs() const
+  {
+    std::vector<unsigned int> dofs;
+    dofs.reserve(constrained_dofs.size() * constraint_width);
+    for (const unsigned int k : constrained_dofs)
+      for (unsigned int d = 0; d < constraint_width; ++d)
+        dofs.push_back(k + d);
+    return dofs;
+  }
+
+
+
   VectorType
   ElasticOperator::point_mass() const
   {

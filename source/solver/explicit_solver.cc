@@ -73,6 +73,7 @@ namespace WheelRail
       }
 
     nodal_update_prepared = false;
+    w_current             = false;
     t                     = 0;
     n_steps               = 0;
     damping_dissipation   = 0;
@@ -144,7 +145,9 @@ namespace WheelRail
   {
     {
       const ScopedTime timer(times.elements);
-      nodal_damping.damped_displacement(u, v, w);
+      if (!w_current)
+        nodal_damping.damped_displacement(u, v, w);
+      w_current = false;
       element_forces(w, nullptr, f, f_cleared);
       if (strain)
         {
@@ -193,12 +196,13 @@ namespace WheelRail
     if (energies)
       begin_energies(*energies, terms);
     terms.damping_power = internal_and_contact_forces(energies);
+    bool w_formed       = false;
     {
       const ScopedTime timer(times.update);
       add_rigid_body_damping(terms);
       add_applied_forces(terms);
       take_net_forces();
-      update_free_dofs(terms, energies != nullptr);
+      w_formed = update_free_dofs(terms, energies != nullptr);
       add_applied_work(terms);
       if (rigid_body)
         rigid_body->advance(prescribed, u, terms.h, dt, t);
@@ -208,6 +212,12 @@ namespace WheelRail
       collect_energies(*energies, terms);
     accumulate(terms);
     exchange_ghosts();
+    if (w_formed)
+      {
+        const ScopedTime timer(times.update);
+        nodal_damping.fix_up(u, v, w);
+      }
+    w_current = w_formed;
     t += dt;
     ++n_steps;
     ++times.steps;
@@ -294,9 +304,10 @@ namespace WheelRail
 
 
 
-  void
+  bool
   ExplicitSolver::update_free_dofs(StepTerms &terms, const bool with_energies)
   {
+    bool w_formed = false;
     const double       h              = terms.h;
     double            *displacement   = u.begin();
     double            *velocity       = v.begin();
@@ -309,7 +320,12 @@ namespace WheelRail
       {
         if (!nodal_update_prepared)
           prepare_nodal_update();
-        if (nodal_update.active())
+        if (nodal_damping_active && nodal_update.forms_damped_field())
+          {
+            nodal_update.apply_damped(h, dt, displacement, velocity, force, w.begin());
+            w_formed = true;
+          }
+        else if (nodal_update.active())
           nodal_update.apply(h, dt, displacement, velocity, force);
         else
           NodalUpdate::apply_per_dof(
@@ -332,6 +348,7 @@ namespace WheelRail
         terms.kinetic = kinetic;
       }
     f_cleared = true;
+    return w_formed;
   }
 
 
@@ -393,6 +410,14 @@ namespace WheelRail
                          overwritten,
                          u.locally_owned_size(),
                          prm.solver.gravity);
+    if (nodal_damping_active &&
+        nodal_update.set_damping(nodal_damping.beta_per_dof().begin(), u.locally_owned_size()))
+      {
+        std::vector<unsigned int> overwritten_dofs;
+        for (const auto &p : prescribed)
+          overwritten_dofs.push_back(p.index);
+        nodal_damping.prepare_fix_up(u, constrained_local_dofs(), overwritten_dofs);
+      }
     nodal_update_prepared = true;
   }
 

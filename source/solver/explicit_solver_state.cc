@@ -24,6 +24,7 @@ namespace WheelRail
     u0 = u;
     for (auto &p : prescribed)
       p.u_prev = u.local_element(p.index);
+    w_current = false;
   }
 
 
@@ -39,6 +40,7 @@ namespace WheelRail
     distribute(v);
     for (auto &p : prescribed)
       p.v_prev = v.local_element(p.index);
+    w_current = false;
   }
 
 
@@ -100,6 +102,7 @@ namespace WheelRail
     distribute(v);
     for (auto &p : prescribed)
       p.v_prev = v.local_element(p.index);
+    w_current = false;
   }
 
 
@@ -114,6 +117,7 @@ namespace WheelRail
     u0 = u;
     for (auto &p : prescribed)
       p.u_prev = u.local_element(p.index);
+    w_current = false;
   }
 
 
@@ -187,6 +191,7 @@ namespace WheelRail
             prescribed[i].v_prev = states[2 * i + 1];
           }
         nodal_update_prepared = false;
+        w_current             = false;
         for (VectorType *x : {&u, &v, &f_ext, &u0})
           x->update_ghost_values();
         distribute(u);

@@ -1,5 +1,7 @@
 #include <wheelrail/solver/nodal_damping.h>
 
+#include <algorithm>
+
 namespace WheelRail
 {
   void
@@ -25,6 +27,40 @@ namespace WheelRail
     double *__restrict W       = w.begin();
 #pragma omp simd
     for (std::size_t i = 0; i < n; ++i)
+      W[i] = U[i] + B[i] * V[i];
+  }
+
+
+
+  void
+  NodalDamping::prepare_fix_up(const VectorType                &u,
+                               const std::vector<unsigned int> &constrained,
+                               const std::vector<unsigned int> &overwritten)
+  {
+    const unsigned int n_owned = u.locally_owned_size();
+    const unsigned int n_ghost = u.get_partitioner()->n_ghost_indices();
+    fix_up_dofs.clear();
+    for (const unsigned int i : overwritten)
+      fix_up_dofs.push_back(i);
+    for (const unsigned int i : constrained)
+      if (i < n_owned)
+        fix_up_dofs.push_back(i);
+    std::sort(fix_up_dofs.begin(), fix_up_dofs.end());
+    fix_up_dofs.erase(std::unique(fix_up_dofs.begin(), fix_up_dofs.end()), fix_up_dofs.end());
+    for (unsigned int i = n_owned; i < n_owned + n_ghost; ++i)
+      fix_up_dofs.push_back(i);
+  }
+
+
+
+  void
+  NodalDamping::fix_up(const VectorType &u, const VectorType &v, VectorType &w) const
+  {
+    const double *__restrict U = u.begin();
+    const double *__restrict V = v.begin();
+    const double *__restrict B = beta.begin();
+    double *__restrict W       = w.begin();
+    for (const unsigned int i : fix_up_dofs)
       W[i] = U[i] + B[i] * V[i];
   }
 

@@ -87,8 +87,55 @@ namespace WheelRail
 
 
 
+  bool
+  NodalUpdate::set_damping(const double *beta, const unsigned int n_dofs)
+  {
+    node_beta.clear();
+    if (!is_active || n_dofs != 3 * n_nodes)
+      return false;
+    std::vector<double> b(n_nodes);
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        if (beta[3 * k + 1] != beta[3 * k] || beta[3 * k + 2] != beta[3 * k])
+          return false;
+        b[k] = beta[3 * k];
+      }
+    node_beta = std::move(b);
+    return true;
+  }
+
+
+
   void
   NodalUpdate::apply(const double h, const double dt, double *U, double *V, double *F) const
+  {
+    update<false>(h, dt, U, V, F, nullptr);
+  }
+
+
+
+  void
+  NodalUpdate::apply_damped(const double h,
+                            const double dt,
+                            double      *U,
+                            double      *V,
+                            double      *F,
+                            double      *W) const
+  {
+    Assert(forms_damped_field(), ExcInternalError());
+    update<true>(h, dt, U, V, F, W);
+  }
+
+
+
+  template <bool damped>
+  void
+  NodalUpdate::update(const double h,
+                      const double dt,
+                      double      *U,
+                      double      *V,
+                      double      *F,
+                      [[maybe_unused]] double *W) const
   {
     v8d g_lanes[3];
     for (unsigned int p = 0; p < 3; ++p)
@@ -99,6 +146,9 @@ namespace WheelRail
     for (; k + 8 <= n_nodes; k += 8)
       {
         const v8d m = load(&node_mass[k]), w = load(&node_inverse_mass[k]);
+        [[maybe_unused]] v8d b{};
+        if constexpr (damped)
+          b = load(&node_beta[k]);
 #pragma GCC unroll 3
         for (unsigned int p = 0; p < 3; ++p)
           {
@@ -111,8 +161,11 @@ namespace WheelRail
             v8d       v   = load(V + i);
             v += h * w_p * (g - load(F + i));
             store(V + i, v);
-            store(U + i, load(U + i) + dt * v);
+            const v8d u = load(U + i) + dt * v;
+            store(U + i, u);
             store(F + i, v8d{});
+            if constexpr (damped)
+              store(W + i, u + __builtin_shuffle(b, node_of[p]) * v);
           }
       }
     for (; k < n_nodes; ++k)
@@ -124,6 +177,8 @@ namespace WheelRail
           V[i] += h * node_inverse_mass[k] * (g - F[i]);
           U[i] += dt * V[i];
           F[i] = 0;
+          if constexpr (damped)
+            W[i] = U[i] + node_beta[k] * V[i];
         }
   }
 } // namespace WheelRail

@@ -227,12 +227,10 @@ namespace WheelRail
     {
       return on_boundary;
     }
-    /** Local indices of the DoFs with a hanging-node constraint. */
-    const std::vector<unsigned int> &
-    constrained_local_dofs() const
-    {
-      return constrained_dofs;
-    }
+    /** Local indices (owned and ghost) of every DoF with a hanging-node
+     *  constraint, every component of a constrained node. */
+    std::vector<unsigned int>
+    constrained_local_dofs() const;
 
   protected:
     const Parameters                                  &prm;

@@ -163,6 +163,24 @@ namespace WheelRail
     {
       return v;
     }
+    /** Damping form = nodal field: w = u + beta_n v, which the next force
+     *  pass reads as it is if damped_field_current() (formed by the last
+     *  step), and beta_n per DoF. */
+    const VectorType &
+    damped_field() const
+    {
+      return w;
+    }
+    bool
+    damped_field_current() const
+    {
+      return w_current;
+    }
+    const VectorType &
+    nodal_beta() const
+    {
+      return nodal_damping.beta_per_dof();
+    }
     double
     time() const
     {
@@ -245,8 +263,10 @@ namespace WheelRail
     void
     take_net_forces();
     /** The central-difference update of u and v on the free DoFs; clears f.
-     *  With energies, per DoF with the kinetic energy into @p terms. */
-    void
+     *  With energies, per DoF with the kinetic energy into @p terms.
+     *  Returns whether it also formed the nodal damping's w on the owned
+     *  DoFs (NodalUpdate::apply_damped(); the step then fixes up the rest). */
+    bool
     update_free_dofs(StepTerms &terms, const bool with_energies);
     /** The applied forces' work over the second half of the step (with the
      *  new velocity). */
@@ -296,6 +316,9 @@ namespace WheelRail
     NodalDamping nodal_damping;
     bool         nodal_damping_active = false;
     VectorType   w, f_u;
+    /** w is u + beta_n v of the current u and v: formed by the last step
+     *  and not yet used; anything else that sets u or v clears it. */
+    bool w_current = false;
     /** f is zero (the update of the last step cleared it behind itself:
      *  the next step's assembly need not). */
     bool          f_cleared           = false;

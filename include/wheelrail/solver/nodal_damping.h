@@ -14,6 +14,10 @@
  * v . (f_int(w) - f_int(u)) (a second, undamped force pass at u, which the
  * strain energies need anyway) is integrated over time by the trapezoidal
  * rule between the samples.
+ *
+ * The explicit step forms w in its update pass (NodalUpdate::apply_damped())
+ * for the owned DoFs; fix_up() then forms it where the step changes u or v
+ * after that pass: the prescribed and hanging DoFs and the ghost entries.
  */
 #ifndef wheelrail_solver_nodal_damping_h
 #define wheelrail_solver_nodal_damping_h
@@ -43,6 +47,28 @@ namespace WheelRail
      * only), so that summed over the ranks every cell counts once; @p v is
      * ghosted and distributed.
      */
+    /** beta_n per DoF [s] (owned and ghost entries). */
+    const VectorType &
+    beta_per_dof() const
+    {
+      return beta;
+    }
+
+    /**
+     * The entries that fix_up() forms: the ghost entries of @p u's
+     * partitioner, the owned hanging DoFs among @p constrained
+     * (ElasticOperator::constrained_local_dofs()) and the owned DoFs
+     * @p overwritten (prescribed).
+     */
+    void
+    prepare_fix_up(const VectorType                &u,
+                   const std::vector<unsigned int> &constrained,
+                   const std::vector<unsigned int> &overwritten);
+
+    /** w = u + beta_n v on the entries of prepare_fix_up() only. */
+    void
+    fix_up(const VectorType &u, const VectorType &v, VectorType &w) const;
+
     static double
     power(const VectorType &v, const VectorType &f_w, const VectorType &f_u);
 
@@ -71,7 +97,8 @@ namespace WheelRail
     }
 
   private:
-    VectorType beta; ///< beta_n per DoF [s], ghosted
+    VectorType                beta; ///< beta_n per DoF [s], ghosted
+    std::vector<unsigned int> fix_up_dofs; ///< local indices, sorted, ghosts last
     bool       have_sample = false;
     double     last_time   = 0;
     double     last_power  = 0;

@@ -57,6 +57,32 @@ namespace WheelRail
     void
     apply(const double h, const double dt, double *U, double *V, double *F) const;
 
+    /**
+     * Take the nodal damping's beta_n (NodalDamping) per node for
+     * apply_damped(), if the three components of every owned node share
+     * it (they do: beta_n is a node's). Returns whether it did. Call after
+     * prepare().
+     */
+    bool
+    set_damping(const double *beta, const unsigned int n_dofs);
+
+    /** Whether set_damping() took beta_n. */
+    bool
+    forms_damped_field() const
+    {
+      return !node_beta.empty();
+    }
+
+    /**
+     * apply(), and in the same pass the damped field W = u + beta_n v of
+     * the nodal damping from the new u and v of every owned DoF, as
+     * NodalDamping::damped_displacement() forms it (the same operations:
+     * the same bits). The DoFs that the step changes after the update
+     * (prescribed, hanging, ghost) need NodalDamping::fix_up().
+     */
+    void
+    apply_damped(const double h, const double dt, double *U, double *V, double *F, double *W) const;
+
     /** The same update from per-DoF inverse mass @p W and load @p G. */
     static void
     apply_per_dof(const double       h,
@@ -74,6 +100,11 @@ namespace WheelRail
     double              gravity[3]{};
     std::vector<double> node_mass;
     std::vector<double> node_inverse_mass;
+    std::vector<double> node_beta; ///< empty unless set_damping() took it
+
+    template <bool damped>
+    void
+    update(const double h, const double dt, double *U, double *V, double *F, double *W) const;
   };
 } // namespace WheelRail
 
