@@ -1,5 +1,5 @@
 // Unit test of the damped field w = u + beta_n v formed inside the explicit
-// step (Damping form = nodal field): NodalUpdate::apply_damped() forms it on
+// step (Damping form = nodal field): NodalUpdate::apply() with w forms it on
 // the owned DoFs in the update pass, NodalDamping::fix_up() where the step
 // changes u or v after that pass (prescribed DoFs, hanging DoFs, ghosts).
 //  - after every step, w equals u + beta_n v on every owned and ghost entry,

@@ -322,7 +322,7 @@ namespace WheelRail
           prepare_nodal_update();
         if (nodal_damping_active && nodal_update.forms_damped_field())
           {
-            nodal_update.apply_damped(h, dt, displacement, velocity, force, w.begin());
+            nodal_update.apply(h, dt, displacement, velocity, force, w.begin());
             w_formed = true;
           }
         else if (nodal_update.active())

@@ -107,23 +107,16 @@ namespace WheelRail
 
 
   void
-  NodalUpdate::apply(const double h, const double dt, double *U, double *V, double *F) const
+  NodalUpdate::apply(
+    const double h, const double dt, double *U, double *V, double *F, double *W) const
   {
-    update<false>(h, dt, U, V, F, nullptr);
-  }
-
-
-
-  void
-  NodalUpdate::apply_damped(const double h,
-                            const double dt,
-                            double      *U,
-                            double      *V,
-                            double      *F,
-                            double      *W) const
-  {
-    Assert(forms_damped_field(), ExcInternalError());
-    update<true>(h, dt, U, V, F, W);
+    if (W)
+      {
+        Assert(forms_damped_field(), ExcInternalError());
+        update<true>(h, dt, U, V, F, W);
+      }
+    else
+      update<false>(h, dt, U, V, F, nullptr);
   }
 
 

@@ -265,7 +265,7 @@ namespace WheelRail
     /** The central-difference update of u and v on the free DoFs; clears f.
      *  With energies, per DoF with the kinetic energy into @p terms.
      *  Returns whether it also formed the nodal damping's w on the owned
-     *  DoFs (NodalUpdate::apply_damped(); the step then fixes up the rest). */
+     *  DoFs (NodalUpdate::apply() with w; the step then fixes up the rest). */
     bool
     update_free_dofs(StepTerms &terms, const bool with_energies);
     /** The applied forces' work over the second half of the step (with the

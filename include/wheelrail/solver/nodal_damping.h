@@ -15,7 +15,7 @@
  * strain energies need anyway) is integrated over time by the trapezoidal
  * rule between the samples.
  *
- * The explicit step forms w in its update pass (NodalUpdate::apply_damped())
+ * The explicit step forms w in its update pass (NodalUpdate::apply() with w)
  * for the owned DoFs; fix_up() then forms it where the step changes u or v
  * after that pass: the prescribed and hanging DoFs and the ghost entries.
  */

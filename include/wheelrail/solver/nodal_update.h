@@ -53,14 +53,26 @@ namespace WheelRail
       return is_active;
     }
 
-    /** v += h w (g - f), u += dt v, f = 0 over the owned DoFs. */
+    /**
+     * v += h w (g - f), u += dt v, f = 0 over the owned DoFs. With @p W,
+     * in the same pass also the damped field W = u + beta_n v of the nodal
+     * damping from the new u and v, as NodalDamping::damped_displacement()
+     * forms it (the same operations: the same bits); set_damping() must
+     * have taken beta_n. The DoFs that the step changes after the update
+     * (prescribed, hanging, ghost) need NodalDamping::fix_up().
+     */
     void
-    apply(const double h, const double dt, double *U, double *V, double *F) const;
+    apply(const double h,
+          const double dt,
+          double      *U,
+          double      *V,
+          double      *F,
+          double      *W = nullptr) const;
 
     /**
-     * Take the nodal damping's beta_n (NodalDamping) per node for
-     * apply_damped(), if the three components of every owned node share
-     * it (they do: beta_n is a node's). Returns whether it did. Call after
+     * Take the nodal damping's beta_n (NodalDamping) per node for apply()
+     * with W, if the three components of every owned node share it (they
+     * do: beta_n is a node's). Returns whether it did. Call after
      * prepare().
      */
     bool
@@ -72,16 +84,6 @@ namespace WheelRail
     {
       return !node_beta.empty();
     }
-
-    /**
-     * apply(), and in the same pass the damped field W = u + beta_n v of
-     * the nodal damping from the new u and v of every owned DoF, as
-     * NodalDamping::damped_displacement() forms it (the same operations:
-     * the same bits). The DoFs that the step changes after the update
-     * (prescribed, hanging, ghost) need NodalDamping::fix_up().
-     */
-    void
-    apply_damped(const double h, const double dt, double *U, double *V, double *F, double *W) const;
 
     /** The same update from per-DoF inverse mass @p W and load @p G. */
     static void
