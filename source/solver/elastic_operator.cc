@@ -262,6 +262,8 @@ namespace WheelRail
     void
     distribute_groups(double                          *X,
                       double                          *Y,
+                      const double                    *B,
+                      double                          *Z,
                       const std::vector<unsigned int> &constrained,
                       const std::vector<unsigned int> &offsets,
                       const std::vector<unsigned int> &masters,
@@ -282,6 +284,8 @@ namespace WheelRail
               X[constrained[k] + d] = value[d];
               if (Y)
                 Y[constrained[k] + d] = value_y[d];
+              if (Z)
+                Z[constrained[k] + d] = value[d] + B[constrained[k] + d] * value_y[d];
             }
         }
     }
@@ -301,16 +305,35 @@ namespace WheelRail
 
 
   void
-  ElasticOperator::distribute(VectorType &x, VectorType *y) const
+  ElasticOperator::distribute(VectorType       &x,
+                              VectorType       *y,
+                              const VectorType *beta,
+                              VectorType       *z) const
   {
-    // both vectors in one pass over the groups (u and v every step)
-    double *Y = y ? y->begin() : nullptr;
+    // both vectors in one pass over the groups (u and v every step), and
+    // z = x + beta y on the constrained entries if asked
+    Assert(!z || (y && beta), ExcInternalError());
+    double       *Y = y ? y->begin() : nullptr;
+    double       *Z = z ? z->begin() : nullptr;
+    const double *B = beta ? beta->begin() : nullptr;
     if (constraint_width == dim)
-      distribute_groups<dim>(
-        x.begin(), Y, constrained_dofs, constraint_offsets, constraint_masters, constraint_weights);
+      distribute_groups<dim>(x.begin(),
+                             Y,
+                             B,
+                             Z,
+                             constrained_dofs,
+                             constraint_offsets,
+                             constraint_masters,
+                             constraint_weights);
     else
-      distribute_groups<1>(
-        x.begin(), Y, constrained_dofs, constraint_offsets, constraint_masters, constraint_weights);
+      distribute_groups<1>(x.begin(),
+                           Y,
+                           B,
+                           Z,
+                           constrained_dofs,
+                           constraint_offsets,
+                           constraint_masters,
+                           constraint_weights);
   }
 
 

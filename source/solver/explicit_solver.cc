@@ -211,12 +211,7 @@ namespace WheelRail
     if (energies)
       collect_energies(*energies, terms);
     accumulate(terms);
-    exchange_ghosts();
-    if (w_formed)
-      {
-        const ScopedTime timer(times.update);
-        nodal_damping.fix_up(u, v, w);
-      }
+    exchange_ghosts(w_formed);
     w_current = w_formed;
     t += dt;
     ++n_steps;
@@ -381,7 +376,7 @@ namespace WheelRail
 
 
   void
-  ExplicitSolver::exchange_ghosts()
+  ExplicitSolver::exchange_ghosts(const bool w_formed)
   {
     {
       const ScopedTime timer(times.communication);
@@ -389,7 +384,15 @@ namespace WheelRail
       v.update_ghost_values();
     }
     const ScopedTime timer(times.update);
-    distribute(u, &v);
+    if (w_formed)
+      {
+        // w on the hanging DoFs as they are set, then where else the step
+        // changed u or v after the update (prescribed DoFs, ghosts)
+        distribute(u, &v, &nodal_damping.beta_per_dof(), &w);
+        nodal_damping.fix_up(u, v, w);
+      }
+    else
+      distribute(u, &v);
   }
 
 
@@ -416,7 +419,7 @@ namespace WheelRail
         std::vector<unsigned int> overwritten_dofs;
         for (const auto &p : prescribed)
           overwritten_dofs.push_back(p.index);
-        nodal_damping.prepare_fix_up(u, constrained_local_dofs(), overwritten_dofs);
+        nodal_damping.prepare_fix_up(u, overwritten_dofs);
       }
     nodal_update_prepared = true;
   }

@@ -34,21 +34,15 @@ namespace WheelRail
 
   void
   NodalDamping::prepare_fix_up(const VectorType                &u,
-                               const std::vector<unsigned int> &constrained,
                                const std::vector<unsigned int> &overwritten)
   {
     const unsigned int n_owned = u.locally_owned_size();
     const unsigned int n_ghost = u.get_partitioner()->n_ghost_indices();
-    fix_up_dofs.clear();
-    for (const unsigned int i : overwritten)
-      fix_up_dofs.push_back(i);
-    for (const unsigned int i : constrained)
-      if (i < n_owned)
-        fix_up_dofs.push_back(i);
+    fix_up_dofs.assign(overwritten.begin(), overwritten.end());
     std::sort(fix_up_dofs.begin(), fix_up_dofs.end());
     fix_up_dofs.erase(std::unique(fix_up_dofs.begin(), fix_up_dofs.end()), fix_up_dofs.end());
-    for (unsigned int i = n_owned; i < n_owned + n_ghost; ++i)
-      fix_up_dofs.push_back(i);
+    ghost_begin = n_owned;
+    ghost_end   = n_owned + n_ghost;
   }
 
 
@@ -61,6 +55,9 @@ namespace WheelRail
     const double *__restrict B = beta.begin();
     double *__restrict W       = w.begin();
     for (const unsigned int i : fix_up_dofs)
+      W[i] = U[i] + B[i] * V[i];
+#pragma omp simd
+    for (unsigned int i = ghost_begin; i < ghost_end; ++i)
       W[i] = U[i] + B[i] * V[i];
   }
 

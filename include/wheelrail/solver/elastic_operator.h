@@ -107,9 +107,13 @@ namespace WheelRail
     /** Add hanging-node entries of @p f to their masters and zero them. */
     void
     condense(VectorType &f) const;
-    /** Set hanging-node entries of @p x (and of @p y) from their masters. */
+    /** Set hanging-node entries of @p x (and of @p y) from their masters;
+     *  with @p beta and @p z, also z = x + beta y on those entries. */
     void
-    distribute(VectorType &x, VectorType *y = nullptr) const;
+    distribute(VectorType       &x,
+               VectorType       *y    = nullptr,
+               const VectorType *beta = nullptr,
+               VectorType       *z    = nullptr) const;
 
     /**
      * Assemble the stiffness of the one-point element with hourglass

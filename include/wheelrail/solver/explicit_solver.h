@@ -265,7 +265,7 @@ namespace WheelRail
     /** The central-difference update of u and v on the free DoFs; clears f.
      *  With energies, per DoF with the kinetic energy into @p terms.
      *  Returns whether it also formed the nodal damping's w on the owned
-     *  DoFs (NodalUpdate::apply() with w; the step then fixes up the rest). */
+     *  DoFs (NodalUpdate::apply() with w; exchange_ghosts() forms the rest). */
     bool
     update_free_dofs(StepTerms &terms, const bool with_energies);
     /** The applied forces' work over the second half of the step (with the
@@ -275,9 +275,11 @@ namespace WheelRail
     /** The step's damping dissipation and boundary work into the sums. */
     void
     accumulate(const StepTerms &terms);
-    /** Ghost values of u and v, hanging DoFs from their masters. */
+    /** Ghost values of u and v, hanging DoFs from their masters; if
+     *  @p w_formed (the update formed w on the owned DoFs), w where the
+     *  step changed u or v after the update. */
     void
-    exchange_ghosts();
+    exchange_ghosts(const bool w_formed = false);
     /** Take the per-node update (NodalUpdate) where the DoFs allow it. */
     void
     prepare_nodal_update();

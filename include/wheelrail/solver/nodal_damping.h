@@ -16,8 +16,9 @@
  * rule between the samples.
  *
  * The explicit step forms w in its update pass (NodalUpdate::apply() with w)
- * for the owned DoFs; fix_up() then forms it where the step changes u or v
- * after that pass: the prescribed and hanging DoFs and the ghost entries.
+ * for the owned DoFs, the distribution of the hanging DoFs for those, and
+ * fix_up() where else the step changes u or v after that pass: the
+ * prescribed DoFs and the ghost entries.
  */
 #ifndef wheelrail_solver_nodal_damping_h
 #define wheelrail_solver_nodal_damping_h
@@ -56,14 +57,12 @@ namespace WheelRail
 
     /**
      * The entries that fix_up() forms: the ghost entries of @p u's
-     * partitioner, the owned hanging DoFs among @p constrained
-     * (ElasticOperator::constrained_local_dofs()) and the owned DoFs
-     * @p overwritten (prescribed).
+     * partitioner and the owned DoFs @p overwritten (prescribed). The
+     * hanging DoFs get theirs where they are set
+     * (ElasticOperator::distribute() with beta_n and w).
      */
     void
-    prepare_fix_up(const VectorType                &u,
-                   const std::vector<unsigned int> &constrained,
-                   const std::vector<unsigned int> &overwritten);
+    prepare_fix_up(const VectorType &u, const std::vector<unsigned int> &overwritten);
 
     /** w = u + beta_n v on the entries of prepare_fix_up() only. */
     void
@@ -98,7 +97,8 @@ namespace WheelRail
 
   private:
     VectorType                beta; ///< beta_n per DoF [s], ghosted
-    std::vector<unsigned int> fix_up_dofs; ///< local indices, sorted, ghosts last
+    std::vector<unsigned int> fix_up_dofs; ///< owned local indices, sorted
+    unsigned int              ghost_begin = 0, ghost_end = 0; ///< the ghost entries
     bool       have_sample = false;
     double     last_time   = 0;
     double     last_power  = 0;
