@@ -1,7 +1,7 @@
 // Unit test of the damped field w = u + beta_n v formed inside the explicit
 // step (Damping form = nodal field): NodalUpdate::apply() with w forms it on
-// the owned DoFs in the update pass, NodalDamping::fix_up() where the step
-// changes u or v after that pass (prescribed DoFs, hanging DoFs, ghosts).
+// the owned DoFs in the update pass, ElasticOperator::distribute() on the
+// hanging DoFs and NodalDamping::fix_up() on the prescribed DoFs and ghosts.
 //  - after every step, w equals u + beta_n v on every owned and ghost entry,
 //    to the bit, on a bar with one refined cell (hanging nodes), one end
 //    fixed and the other moved by a prescribed velocity;

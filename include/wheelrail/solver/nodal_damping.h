@@ -41,13 +41,6 @@ namespace WheelRail
     void
     damped_displacement(const VectorType &u, const VectorType &v, VectorType &w) const;
 
-    /**
-     * This rank's damping power v . (f_w - f_u) [W]: @p f_w and @p f_u are
-     * this rank's element forces at w and u before they are compressed
-     * (owned and ghost entries hold the contributions of this rank's cells
-     * only), so that summed over the ranks every cell counts once; @p v is
-     * ghosted and distributed.
-     */
     /** beta_n per DoF [s] (owned and ghost entries). */
     const VectorType &
     beta_per_dof() const
@@ -68,6 +61,13 @@ namespace WheelRail
     void
     fix_up(const VectorType &u, const VectorType &v, VectorType &w) const;
 
+    /**
+     * This rank's damping power v . (f_w - f_u) [W]: @p f_w and @p f_u are
+     * this rank's element forces at w and u before they are compressed
+     * (owned and ghost entries hold the contributions of this rank's cells
+     * only), so that summed over the ranks every cell counts once; @p v is
+     * ghosted and distributed.
+     */
     static double
     power(const VectorType &v, const VectorType &f_w, const VectorType &f_u);
 

@@ -59,7 +59,7 @@ namespace WheelRail
      * damping from the new u and v, as NodalDamping::damped_displacement()
      * forms it (the same operations: the same bits); set_damping() must
      * have taken beta_n. The DoFs that the step changes after the update
-     * (prescribed, hanging, ghost) need NodalDamping::fix_up().
+     * need theirs formed again (ExplicitSolver::exchange_ghosts()).
      */
     void
     apply(const double h,
