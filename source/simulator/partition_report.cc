@@ -38,17 +38,21 @@ namespace WheelRail
     const auto   range  = [&](const double x) {
       return std::make_pair(Utilities::MPI::min(x, comm), Utilities::MPI::max(x, comm));
     };
-    const auto c = range(cells), fc = range(family), n = range(owned);
-    const auto ratio = range(owned > 0 ? ghosts / owned : 0.);
-    const auto peers = range(neighbours.size());
+    // the hanging nodes (owned and ghost) that condense() and distribute()
+    // visit every step
+    const double hanging = solver->constrained_local_dofs().size() / dim;
+    const auto   c = range(cells), fc = range(family), n = range(owned), hn = range(hanging);
+    const auto   ratio = range(owned > 0 ? ghosts / owned : 0.);
+    const auto   peers = range(neighbours.size());
     const double ghost_mean =
       Utilities::MPI::sum(ghosts, comm) / std::max(1., Utilities::MPI::sum(owned, comm));
     pcout << "  partition: cells per rank " << fmt(c.first, 7) << " to " << fmt(c.second, 7)
           << " (in family batches " << fmt(fc.first, 7) << " to " << fmt(fc.second, 7)
-          << "), owned nodes " << fmt(n.first, 7) << " to " << fmt(n.second, 7) << std::endl
+          << "), owned nodes " << fmt(n.first, 7) << " to " << fmt(n.second, 7)
+          << ", hanging nodes " << fmt(hn.first, 7) << " to " << fmt(hn.second, 7) << std::endl
           << "    ghost nodes per owned node " << fmt(ratio.first, 3) << " to "
-          << fmt(ratio.second, 3) << " (all ranks " << fmt(ghost_mean, 3)
-          << "), neighbour ranks " << peers.first << " to " << peers.second
+          << fmt(ratio.second, 3) << " (all ranks " << fmt(ghost_mean, 3) << "), neighbour ranks "
+          << peers.first << " to " << peers.second
           << ": per step 3 exchanges with each (ghosts of u and v, forces)" << std::endl;
     if (contact && contact->times().evaluations > 0)
       {

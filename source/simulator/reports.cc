@@ -30,10 +30,11 @@ namespace WheelRail
 
     /**
      * The timed parts of the steps (entries 0-5 of each row of @p by_rank,
-     * one row per rank) and of the contact (entries 6-11, printed where
-     * @p with_contact): each rank's own on up to eight ranks, else each
-     * part's largest and smallest time over the ranks. @p by_rank is empty
-     * except on rank 0, which prints.
+     * one row per rank), of the contact (entries 6-11, printed where
+     * @p with_contact) and two parts of the update (entries 12-13): each
+     * rank's own on up to eight ranks, else each part's largest and
+     * smallest time over the ranks. @p by_rank is empty except on rank 0,
+     * which prints.
      */
     void
     print_split(const ConditionalOStream               &out,
@@ -42,19 +43,22 @@ namespace WheelRail
     {
       if (by_rank.empty())
         return;
-      const char *const names[2][6] = {
+      const char *const names[3][6] = {
         {"elements", "contact", "update", "communication", "energies", "output"},
-        {"search", "wait", "positions", "slaves", "exchange", "forces"}};
-      const unsigned int n_ranks = by_rank.size();
-      for (const unsigned int block : {0u, 1u})
+        {"search", "wait", "positions", "slaves", "exchange", "forces"},
+        {"constraints", "rigid body"}};
+      const char *const  titles[3] = {"  split", "  contact split", "  update split"};
+      const unsigned int sizes[3]  = {6, 6, 2};
+      const unsigned int n_ranks   = by_rank.size();
+      for (const unsigned int block : {0u, 1u, 2u})
         {
           if (block == 1 && !with_contact)
-            break;
-          out << (block == 0 ? "  split" : "  contact split");
+            continue;
+          out << titles[block];
           if (n_ranks > 8)
             {
               out << ", largest / smallest time over the ranks (s):";
-              for (unsigned int i = 0; i < 6; ++i)
+              for (unsigned int i = 0; i < sizes[block]; ++i)
                 {
                   const auto [least, most] = extremes(by_rank, 6 * block + i);
                   out << " " << names[block][i] << " " << fmt(most, 3) << " / " << fmt(least, 3);
@@ -67,7 +71,7 @@ namespace WheelRail
             {
               if (n_ranks > 1)
                 out << "    rank " << r << ":";
-              for (unsigned int i = 0; i < 6; ++i)
+              for (unsigned int i = 0; i < sizes[block]; ++i)
                 out << " " << names[block][i] << " "
                     << fmt(by_rank[r][6 * block + i], block == 0 ? 4 : 3);
               out << std::endl;
@@ -113,9 +117,9 @@ namespace WheelRail
   std::vector<std::vector<double>>
   Simulator::gather_part_times(const double output_seconds) const
   {
-    const StepTimes                       &t = solver->step_times();
-    const ContactTimes                     no_contact;
-    const ContactTimes                    &c = contact ? contact->times() : no_contact;
+    const StepTimes    &t = solver->step_times();
+    const ContactTimes  no_contact;
+    const ContactTimes &c = contact ? contact->times() : no_contact;
     return Utilities::MPI::gather(mpi_communicator,
                                   std::vector<double>{t.elements,
                                                       t.contact,
@@ -128,7 +132,9 @@ namespace WheelRail
                                                       c.positions,
                                                       c.slaves,
                                                       c.exchange,
-                                                      c.forces},
+                                                      c.forces,
+                                                      t.constraints,
+                                                      t.rigid_body},
                                   0);
   }
 

@@ -131,7 +131,7 @@ namespace WheelRail
         contact->add_forces(u_in, dt, advance, f_out);
       }
     {
-      const ScopedTime timer(times.update);
+      const ScopedTime timer(times.update), part(times.constraints);
       condense(f_out);
     }
     const ScopedTime timer(times.communication);
@@ -205,7 +205,10 @@ namespace WheelRail
       w_formed = update_free_dofs(terms, energies != nullptr);
       add_applied_work(terms);
       if (rigid_body)
-        rigid_body->advance(prescribed, u, terms.h, dt, t);
+        {
+          const ScopedTime part(times.rigid_body);
+          rigid_body->advance(prescribed, u, terms.h, dt, t);
+        }
       update_prescribed(terms, energies != nullptr);
     }
     if (energies)
@@ -383,7 +386,7 @@ namespace WheelRail
       u.update_ghost_values();
       v.update_ghost_values();
     }
-    const ScopedTime timer(times.update);
+    const ScopedTime timer(times.update), part(times.constraints);
     if (w_formed)
       {
         // w on the hanging DoFs as they are set, then where else the step
