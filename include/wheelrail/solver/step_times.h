@@ -17,7 +17,7 @@ namespace WheelRail
     double        update        = 0; ///< central-difference update, constraints, rigid body
     double        communication = 0; ///< ghost exchange and force compression
     double        energies      = 0; ///< energies at statistics steps
-    double        constraints   = 0; ///< within update: condense(), the late hanging DoFs, w fix-up
+    double        constraints   = 0; ///< within update: condense(), distribute(), w fix-up
     double        rigid_body    = 0; ///< within update: the rigid body's advance and sum
     unsigned long steps         = 0; ///< steps timed
   };
