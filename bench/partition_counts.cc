@@ -1,7 +1,10 @@
 // What the explicit step exchanges on N ranks, computed on one rank from the
 // partition that p4est would make: the active cells in p4est's order (the
 // trees in p4est's order, each cell's children in z-order) split into N
-// contiguous blocks of equal size, a node owned by the lowest rank among
+// contiguous blocks of equal size (Problem/Partition = cells) or of equal
+// work (= work, the weights of mesh/partition_weights.h: the first cell
+// whose work starts at or after r W / N begins rank r's block), a node
+// owned by the lowest rank among
 // its cells, and a rank's ghost nodes the nodes of its cells and of the
 // cells that share a vertex with them (deal.II's locally relevant set; the
 // hanging nodes' masters that the solver adds are left out) that it does not
@@ -10,7 +13,9 @@
 // and the forces), smallest and largest over the ranks. p4est moves block
 // boundaries so that the 8 children of a parent stay on one rank; the counts
 // here do not, and differ from a run's by that (the note compares them with
-// the runs on 2, 4 and 8 ranks).
+// the runs on 2, 4 and 8 ranks). Also per rank count: the largest rank's
+// work over the mean (the weights of mesh/partition_weights.h, whichever
+// partition) and the smallest and largest cell count.
 //
 // usage: partition_counts CASE.prm [N ...]   (default N: 2 4 8 16 32 64)
 
@@ -20,6 +25,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <wheelrail/geometry/interface.h>
+#include <wheelrail/mesh/partition_weights.h>
 #include <wheelrail/parameters/parameters.h>
 
 #include <algorithm>
@@ -44,7 +50,9 @@ namespace
 
   void
   collect(const typename Triangulation<dim>::cell_iterator &cell,
-          std::vector<std::array<unsigned int, 8>>         &vertices)
+          const std::vector<types::boundary_id>            &contact_boundaries,
+          std::vector<std::array<unsigned int, 8>>         &vertices,
+          std::vector<double>                              &work)
   {
     if (cell->is_active())
       {
@@ -52,10 +60,11 @@ namespace
         for (unsigned int k = 0; k < 8; ++k)
           v[k] = cell->vertex_index(k);
         vertices.push_back(v);
+        work.push_back(WheelRail::Mesh::cell_work_parts(cell, contact_boundaries).work());
       }
     else
       for (unsigned int c = 0; c < cell->n_children(); ++c)
-        collect(cell->child(c), vertices);
+        collect(cell->child(c), contact_boundaries, vertices, work);
   }
 } // namespace
 
@@ -83,9 +92,20 @@ main(int argc, char **argv)
       WheelRail::Geometry::build(*parameters.geometry_model, triangulation);
 
       // the active cells in p4est's order, by their vertices
+      const auto contact_boundaries =
+        WheelRail::Mesh::contact_boundaries(parameters.contact,
+                                            parameters.geometry_model->has_contact());
+      const bool by_work = parameters.problem.partition == WheelRail::PartitionBy::work;
       std::vector<std::array<unsigned int, 8>> cells;
+      std::vector<double>                      work;
       for (const auto coarse : triangulation.get_p4est_tree_to_coarse_cell_permutation())
-        collect(typename Triangulation<dim>::cell_iterator(&triangulation, 0, coarse), cells);
+        collect(typename Triangulation<dim>::cell_iterator(&triangulation, 0, coarse),
+                contact_boundaries,
+                cells,
+                work);
+      double total_work = 0;
+      for (const double w : work)
+        total_work += w;
       const std::size_t n_cells    = cells.size();
       const std::size_t n_vertices = triangulation.n_vertices();
       std::printf("%zu cells, %zu vertices in use\n",
@@ -93,14 +113,32 @@ main(int argc, char **argv)
                   std::size_t(std::count(triangulation.get_used_vertices().begin(),
                                          triangulation.get_used_vertices().end(),
                                          true)));
+      std::printf("partition by %s\n", by_work ? "work" : "cells");
       std::printf("ranks,cells_per_rank,owned_nodes_min,owned_nodes_max,ghosts_per_owned_min,"
-                  "ghosts_per_owned_max,ghosts_per_owned_all,neighbours_min,neighbours_max\n");
+                  "ghosts_per_owned_max,ghosts_per_owned_all,neighbours_min,neighbours_max,"
+                  "work_max_over_mean,cells_min,cells_max\n");
       for (const unsigned int N : counts)
         {
           std::vector<unsigned int> part(n_cells);
-          for (unsigned int r = 0; r < N; ++r)
-            for (std::size_t k = n_cells * r / N; k < n_cells * (r + 1) / N; ++k)
-              part[k] = r;
+          if (by_work)
+            {
+              double before = 0;
+              for (std::size_t k = 0; k < n_cells; ++k)
+                {
+                  part[k] = std::min<unsigned int>(N - 1, before * N / total_work + 1e-9);
+                  before += work[k];
+                }
+            }
+          else
+            for (unsigned int r = 0; r < N; ++r)
+              for (std::size_t k = n_cells * r / N; k < n_cells * (r + 1) / N; ++k)
+                part[k] = r;
+          std::vector<double> rank_work(N, 0), rank_cells(N, 0);
+          for (std::size_t k = 0; k < n_cells; ++k)
+            {
+              rank_work[part[k]] += work[k];
+              rank_cells[part[k]] += 1;
+            }
           // per vertex: the ranks of its cells (owner: the lowest)
           std::vector<std::vector<unsigned int>> vertex_parts(n_vertices);
           for (std::size_t k = 0; k < n_cells; ++k)
@@ -149,7 +187,7 @@ main(int argc, char **argv)
               all_owned += owned[r];
               all_ghosts += ghosts[r];
             }
-          std::printf("%u,%.0f,%.0f,%.0f,%.4f,%.4f,%.4f,%u,%u\n",
+          std::printf("%u,%.0f,%.0f,%.0f,%.4f,%.4f,%.4f,%u,%u,%.4f,%.0f,%.0f\n",
                       N,
                       double(n_cells) / N,
                       owned_min,
@@ -158,7 +196,10 @@ main(int argc, char **argv)
                       ratio_max,
                       all_ghosts / all_owned,
                       peers_min,
-                      peers_max);
+                      peers_max,
+                      *std::max_element(rank_work.begin(), rank_work.end()) * N / total_work,
+                      *std::min_element(rank_cells.begin(), rank_cells.end()),
+                      *std::max_element(rank_cells.begin(), rank_cells.end()));
         }
     }
   catch (const std::exception &e)

@@ -3,8 +3,10 @@
 
 The explicit step on N ranks, per step, as the sum of
   - the element loop and the nodal update: their rank-seconds on 2 ranks (summed
-    over the ranks) divided by N, times the largest over the mean owned nodes
-    (the update is per node; the loop per cell, equal per rank: 1);
+    over the ranks) divided by N, the loop times the largest rank's cell work
+    over the mean (work_max_over_mean of partition_counts: the weights of
+    include/wheelrail/mesh/partition_weights.h; 1 where the counts have no
+    such column), the update times the largest over the mean owned nodes;
   - the contact's computed slaves: their rank-seconds divided by N (each rank
     computes a block of them);
   - the contact's replicated part (the positions of all candidates, the
@@ -31,7 +33,7 @@ import math
 
 def read_counts(path):
     with open(path) as f:
-        lines = [l for l in f if l.startswith("ranks,") or (l[:1].isdigit() and l.count(",") == 8)]
+        lines = [l for l in f if l.startswith("ranks,") or (l[:1].isdigit() and l.count(",") >= 8)]
     return list(csv.DictReader(lines))
 
 
@@ -65,7 +67,7 @@ def main():
         n = int(r["ranks"])
         owned_mean = (float(r["owned_nodes_min"]) + float(r["owned_nodes_max"])) / 2
         node_imbalance = float(r["owned_nodes_max"]) / owned_mean
-        el = args.elements / n
+        el = args.elements / n * float(r.get("work_max_over_mean") or 1)
         up = args.update / n * node_imbalance
         sl = args.slaves / n
         ghost_kb = float(r["ghosts_per_owned_max"]) * owned_mean * 24 / 1024

@@ -67,6 +67,18 @@ namespace WheelRail
                       "Parse, build the mesh, print the setup summary and "
                       "stop without time stepping.");
     flags.mark("Dry run", EntryFlag::resumable);
+    prm.declare_entry("Partition",
+                      "work",
+                      Patterns::Selection("work|cells"),
+                      "How the cells are split between the MPI ranks: 'work' "
+                      "gives each rank about the same work of the explicit "
+                      "step, from each cell's kind (family or not), its faces "
+                      "with hanging nodes and its contact faces, fixed "
+                      "weights that make the partition the same in every run "
+                      "(include/wheelrail/mesh/partition_weights.h); 'cells' "
+                      "gives each rank the same number of cells. p4est keeps "
+                      "its order of the cells either way. One rank: no "
+                      "effect.");
     prm.leave_subsection();
   }
 
@@ -81,6 +93,7 @@ namespace WheelRail
     output_directory = prm.get("Output directory");
     test_mode        = prm.get_bool("Test mode");
     dry_run          = prm.get_bool("Dry run");
+    partition        = partition_by_names.parse(prm.get("Partition"));
     prm.leave_subsection();
     AssertThrow(!output_directory.empty(),
                 ExcMessage("Problem/Output directory must not be empty."));

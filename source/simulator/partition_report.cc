@@ -9,6 +9,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <wheelrail/geometry/interface.h>
+#include <wheelrail/mesh/partition_weights.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 
@@ -54,6 +56,22 @@ namespace WheelRail
           << fmt(ratio.second, 3) << " (all ranks " << fmt(ghost_mean, 3) << "), neighbour ranks "
           << peers.first << " to " << peers.second
           << ": per step 3 exchanges with each (ghosts of u and v, forces)" << std::endl;
+    // the work model of Problem/Partition = work, whichever partition ran
+    const Mesh::RankWork w =
+      Mesh::rank_work(triangulation,
+                      Mesh::contact_boundaries(parameters.contact,
+                                               parameters.geometry_model->has_contact()));
+    const auto   wr   = range(w.work);
+    const double mean = Utilities::MPI::sum(w.work, comm) / n_ranks;
+    const auto oc = range(w.other_cells), hf = range(w.hanging_faces), cf = range(w.contact_faces);
+    pcout << "    cell work per rank in family cells' element work (mesh/partition_weights.h; "
+          << "Problem/Partition = " << partition_by_names(parameters.problem.partition)
+          << "): " << fmt(wr.first / Mesh::CellWorkModel::family_cell, 7) << " to "
+          << fmt(wr.second / Mesh::CellWorkModel::family_cell, 7) << ", largest / mean "
+          << fmt(wr.second / mean, 4) << "; cells outside families " << fmt(oc.first, 6) << " to "
+          << fmt(oc.second, 6) << ", faces with hanging nodes " << fmt(hf.first, 6) << " to "
+          << fmt(hf.second, 6) << ", contact faces " << fmt(cf.first, 6) << " to "
+          << fmt(cf.second, 6) << std::endl;
     if (contact && contact->times().evaluations > 0)
       {
         const ContactTimes &t = contact->times();

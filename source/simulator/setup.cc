@@ -4,6 +4,7 @@
 #include <wheelrail/base/stop_signal.h>
 #include <wheelrail/geometry/interface.h>
 #include <wheelrail/mesh/geometry.h>
+#include <wheelrail/mesh/partition_weights.h>
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
 
@@ -152,6 +153,9 @@ namespace WheelRail
 
     const Geometry::GeometryModel &geometry = *parameters.geometry_model;
     Geometry::build(geometry, triangulation);
+    if (parameters.problem.partition == PartitionBy::work)
+      Mesh::partition_by_work(triangulation,
+                              Mesh::contact_boundaries(parameters.contact, geometry.has_contact()));
     solver = std::make_unique<ExplicitSolver>(parameters, triangulation);
     solver->setup();
     if (parameters.contact.enabled && geometry.has_contact())

@@ -64,6 +64,14 @@ namespace WheelRail
   inline constexpr SelectionNames<RunMode, 4> run_mode_names{
     {{"explicit dynamics", "static contact", "patch test", "rigid rotation"}}};
 
+  /** Problem/Partition: how the cells are split between the ranks. */
+  enum class PartitionBy
+  {
+    work,
+    cells
+  };
+  inline constexpr SelectionNames<PartitionBy, 2> partition_by_names{{{"work", "cells"}}};
+
   /** Boundary conditions/Wheel bore: the motion of the bore nodes. */
   enum class WheelBore
   {
@@ -125,6 +133,8 @@ namespace WheelRail
     bool test_mode;
     /** Parse, build the mesh, print the summary and stop. */
     bool dry_run;
+    /** Equal work (Mesh::partition_by_work()) or equal cells per rank. */
+    PartitionBy partition;
 
     static void
     declare_parameters(ParameterHandler &prm);
