@@ -18,8 +18,11 @@ namespace WheelRail
                     const std::vector<types::boundary_id>   &contact_boundaries)
     {
       CellWorkParts parts;
-      // a coarse cell: where the coarse mesh is structured, the batches
-      // take its cells in blocks of 2 x 2 x 2 as a family's
+      // the family rule of ElasticOperator::cells_in_batch_order() (its
+      // check that the 8 children are locally owned holds here: p4est keeps
+      // a family on one rank); a coarse cell: where the coarse mesh is
+      // structured, the batches take its cells in blocks of 2 x 2 x 2 as a
+      // family's
       parts.in_family = cell->level() == 0;
       if (cell->level() > 0)
         {

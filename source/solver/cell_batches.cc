@@ -162,7 +162,8 @@ namespace WheelRail
     // their first child, so that each fills one batch (see family_offset:
     // 27 nodes to gather and scatter instead of 64); then blocks of other
     // cells arranged the same way; then the remaining cells in the
-    // triangulation's order.
+    // triangulation's order. Mesh::cell_work_parts() weighs the cells for
+    // the partition by the same family rule.
     std::vector<DoFHandler<dim>::active_cell_iterator> cells;
     cells.reserve(n_cells);
     std::vector<bool> taken(triangulation.n_active_cells(), false);
