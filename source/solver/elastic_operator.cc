@@ -236,7 +236,9 @@ namespace WheelRail
   {
     // The loops of condense() and distribute() for constraint groups of
     // `width` DoFs: flat arrays, the groups stream, only the masters are
-    // gathered.
+    // gathered, their lines requested a few groups ahead.
+    constexpr unsigned int group_prefetch_distance = 16;
+
     template <unsigned int width>
     void
     condense_groups(double                          *X,
@@ -245,8 +247,17 @@ namespace WheelRail
                     const std::vector<unsigned int> &masters,
                     const std::vector<double>       &weights)
     {
-      for (unsigned int k = 0; k < constrained.size(); ++k)
+      const unsigned int n = constrained.size();
+      for (unsigned int k = 0; k < n; ++k)
         {
+          if (k + group_prefetch_distance < n)
+            {
+              __builtin_prefetch(X + constrained[k + group_prefetch_distance], 1);
+              for (unsigned int j = offsets[k + group_prefetch_distance];
+                   j < offsets[k + group_prefetch_distance + 1];
+                   ++j)
+                __builtin_prefetch(X + masters[j], 1);
+            }
           double value[width];
           for (unsigned int d = 0; d < width; ++d)
             value[d] = X[constrained[k] + d];
@@ -269,8 +280,29 @@ namespace WheelRail
                       const std::vector<unsigned int> &masters,
                       const std::vector<double>       &weights)
     {
-      for (unsigned int k = 0; k < constrained.size(); ++k)
+      const unsigned int n = constrained.size();
+      for (unsigned int k = 0; k < n; ++k)
         {
+          if (k + group_prefetch_distance < n)
+            {
+              const unsigned int i = constrained[k + group_prefetch_distance];
+              __builtin_prefetch(X + i, 1);
+              if (Y)
+                __builtin_prefetch(Y + i, 1);
+              if (Z)
+                {
+                  __builtin_prefetch(Z + i, 1);
+                  __builtin_prefetch(B + i);
+                }
+              for (unsigned int j = offsets[k + group_prefetch_distance];
+                   j < offsets[k + group_prefetch_distance + 1];
+                   ++j)
+                {
+                  __builtin_prefetch(X + masters[j]);
+                  if (Y)
+                    __builtin_prefetch(Y + masters[j]);
+                }
+            }
           double value[width] = {}, value_y[width] = {};
           for (unsigned int j = offsets[k]; j < offsets[k + 1]; ++j)
             for (unsigned int d = 0; d < width; ++d)
