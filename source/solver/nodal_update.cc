@@ -1,6 +1,8 @@
 #include <wheelrail/solver/element_kernel.h>
 #include <wheelrail/solver/nodal_update.h>
 
+#include <cstdint>
+
 namespace WheelRail
 {
   namespace
@@ -15,6 +17,29 @@ namespace WheelRail
     constexpr v8i node_of[3] = {{0, 0, 0, 1, 1, 1, 2, 2},
                                 {2, 3, 3, 3, 4, 4, 4, 5},
                                 {5, 5, 6, 6, 6, 7, 7, 7}};
+
+    // w is only written here, and read in the next element loop: stored
+    // past the caches where the line is aligned (no read of its old line)
+    inline void
+    store_streaming(double *p, const v8d &x)
+    {
+#ifdef __AVX512F__
+      if ((reinterpret_cast<std::uintptr_t>(p) & 63) == 0)
+        {
+          _mm512_stream_pd(p, reinterpret_cast<__m512d>(x));
+          return;
+        }
+#endif
+      store(p, x);
+    }
+
+    inline void
+    streaming_stores_done()
+    {
+#ifdef __AVX512F__
+      _mm_sfence();
+#endif
+    }
   } // namespace
 
 
@@ -158,9 +183,11 @@ namespace WheelRail
             store(U + i, u);
             store(F + i, v8d{});
             if constexpr (damped)
-              store(W + i, u + __builtin_shuffle(b, node_of[p]) * v);
+              store_streaming(W + i, u + __builtin_shuffle(b, node_of[p]) * v);
           }
       }
+    if constexpr (damped)
+      streaming_stores_done();
     for (; k < n_nodes; ++k)
       for (unsigned int c = 0; c < 3; ++c)
         {
