@@ -230,9 +230,11 @@ namespace WheelRail
       {
         const Data         data{batch_blocks + std::size_t(batch) * block_size};
         const unsigned int slot = batch & 1;
+        // the damping time constants, the block's last W values, only
+        // where the kernel damps
         if (batch + prefetch_distance < n_batches)
           prefetch_block(batch_blocks + std::size_t(batch + prefetch_distance) * block_size,
-                         block_size);
+                         with_damping ? block_size : block_size - W);
         const unsigned int family = batch_family[batch];
         if (batch + node_prefetch_distance < n_batches)
           prefetch_nodes(batch + node_prefetch_distance, U, V, F, with_damping);

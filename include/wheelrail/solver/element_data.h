@@ -169,6 +169,10 @@ namespace WheelRail
       constexpr unsigned int n_double = beta + W; ///< block size in doubles
       static_assert(Field::b == 0 && Field::c == 24 && Field::volume == n_geometry,
                     "b and c are the first 36 fields");
+      static_assert(Field::beta + 1 == Field::n_fields && beta + W == n_double,
+                    "the damping time constants are a block's last W values "
+                    "(ElasticOperator::element_loop() leaves them out of its "
+                    "prefetch where the kernel does not damp)");
     } // namespace SingleField
 
     /** The kernel's view of a batch's element data in double precision
