@@ -150,6 +150,23 @@ namespace WheelRail
                       "no strain; the strain energies of the statistics come "
                       "from the same factors; doc/performance.md gives its "
                       "effect).");
+    prm.declare_entry("Element geometry sharing",
+                      "identical",
+                      Patterns::Selection("identical|within rounding"),
+                      "Which batches of 8 cells share one copy of the "
+                      "single-precision element data in the force loop [-] "
+                      "(with Element geometry precision = single). "
+                      "'identical': those whose data are the same bit for bit; "
+                      "the results are those of unshared data. 'within "
+                      "rounding': each cell's gradient factors are first rounded "
+                      "to multiples of 2^-23 of the power of two below its "
+                      "largest one (at most half a float unit of that factor), "
+                      "its hourglass factors to the same relative grid, V0, the "
+                      "hourglass stiffness and the damping time constant to 24 "
+                      "bits, so that cells that differ by less than the floats' "
+                      "rounding, such as the translated copies of a structured "
+                      "zone, share one copy and the loop streams less "
+                      "(doc/notes/performance_shared_geometry.md).");
     prm.leave_subsection();
   }
 
@@ -170,6 +187,11 @@ namespace WheelRail
     rayleigh_beta                 = prm.get_double("Rayleigh beta");
     gravity                       = get_vector(prm, "Gravity");
     single_precision_geometry     = prm.get("Element geometry precision") == "single";
+    geometry_sharing = geometry_sharing_names.parse(prm.get("Element geometry sharing"));
+    AssertThrow(geometry_sharing == GeometrySharing::identical || single_precision_geometry,
+                ExcMessage("Time integration/Element geometry sharing = within rounding "
+                           "needs Time integration/Element geometry precision = single "
+                           "(it rounds the single-precision element data)."));
     prm.leave_subsection();
   }
 } // namespace WheelRail

@@ -3,6 +3,7 @@
 
 #include <wheelrail/simulator/format.h>
 #include <wheelrail/simulator/simulator.h>
+#include <wheelrail/solver/element_data.h>
 
 #include <algorithm>
 #include <array>
@@ -202,6 +203,13 @@ namespace WheelRail
              "parent: 27 nodes gathered "
              "and scattered, not 64): "
           << family_cells << " (" << fmt(100. * family_cells / cells, 3) << " %)" << std::endl;
+    const auto [blocks, batches]  = solver->n_single_blocks_and_batches();
+    const unsigned int all_blocks = Utilities::MPI::sum(blocks, mpi_communicator);
+    if (all_blocks > 0)
+      pcout << "  single-precision element data: " << all_blocks << " distinct blocks for "
+            << Utilities::MPI::sum(batches, mpi_communicator) << " batches ("
+            << fmt(all_blocks * ElementKernel::SingleField::n_double * 8e-6, 3) << " MB)"
+            << std::endl;
     print_split(pcout, by_rank, contact != nullptr);
     report_partition();
     // The wall time of single steps (this machine's noise: on a shared

@@ -371,7 +371,17 @@ namespace WheelRail
       pcout << ", from the nodal field u + beta_n v";
     pcout << std::endl;
     if (parameters.solver.single_precision_geometry)
-      pcout << "  element geometry             : single precision (force loop)" << std::endl;
+      {
+        pcout << "  element geometry             : single precision (force loop)";
+        if (parameters.solver.geometry_sharing == GeometrySharing::within_rounding)
+          {
+            const auto [blocks, batches] = solver->n_single_blocks_and_batches();
+            pcout << ", shared within rounding (blocks / batches "
+                  << Utilities::MPI::sum(blocks, mpi_communicator) << " / "
+                  << Utilities::MPI::sum(batches, mpi_communicator) << ")";
+          }
+        pcout << std::endl;
+      }
     if (contact)
       print_contact_summary();
     if (parameters.problem.mode == RunMode::explicit_dynamics)

@@ -371,33 +371,6 @@ namespace WheelRail
 
 
   void
-  ElasticOperator::copy_single_precision()
-  {    // the force loop's copy with single-precision geometric factors
-    batch_single.clear();
-    if (prm.solver.single_precision_geometry)
-      {
-        batch_single.resize_fast(std::size_t(n_batches) * SingleField::n_double);
-        for (unsigned int batch = 0; batch < n_batches; ++batch)
-          {
-            const double *data  = &batch_data[std::size_t(batch) * Field::n_fields * W];
-            double       *block = &batch_single[std::size_t(batch) * SingleField::n_double];
-            float         geometry[SingleField::n_geometry * W];
-            for (unsigned int k = 0; k < SingleField::n_geometry * W; ++k)
-              geometry[k] = static_cast<float>(data[k]);
-            std::memcpy(block, geometry, sizeof(geometry));
-            for (unsigned int l = 0; l < W; ++l)
-              {
-                block[SingleField::volume + l] = data[Field::volume * W + l];
-                block[SingleField::kappa + l]  = data[Field::kappa * W + l];
-                block[SingleField::beta + l]   = data[Field::beta * W + l];
-              }
-          }
-      }
-  }
-
-
-
-  void
   ElasticOperator::find_families()
   {
     // Batches that are families (see family_offset): the node map of all

@@ -45,10 +45,15 @@ namespace WheelRail
     const auto    loop         = [&](auto with_damping_, auto with_energies) {
       constexpr bool d = decltype(with_damping_)::value, e = decltype(with_energies)::value;
       return prm.solver.single_precision_geometry ?
-                          element_loop<SingleData<>, d, e>(
-                 batch_single.data(), SingleField::n_double, U, V, F, energies) :
+                          element_loop<SingleData<>, d, e>(batch_single.data(),
+                                                batch_single_block.data(),
+                                                SingleField::n_double,
+                                                U,
+                                                V,
+                                                F,
+                                                energies) :
                           element_loop<DoubleData<>, d, e>(
-                 batch_data.data(), Field::n_fields * W, U, V, F, energies);
+                 batch_data.data(), nullptr, Field::n_fields * W, U, V, F, energies);
     };
     const auto with_energies = [&](auto with_damping_) {
       return energies != nullptr ? loop(with_damping_, std::true_type()) :
@@ -207,12 +212,13 @@ namespace WheelRail
 
   template <typename Data, bool with_damping, bool with_energies>
   double
-  ElasticOperator::element_loop(const double      *batch_blocks,
-                                const unsigned int block_size,
-                                const double      *U,
-                                const double      *V,
-                                double            *F,
-                                StrainEnergies    *energies) const
+  ElasticOperator::element_loop(const double       *batch_blocks,
+                                const unsigned int *block_of,
+                                const unsigned int  block_size,
+                                const double       *U,
+                                const double       *V,
+                                double             *F,
+                                StrainEnergies     *energies) const
   {
     // Software pipelined by one batch: the nodal values of batch + 1 are
     // gathered (scalar stores, or a family's grid vectors) before the
@@ -226,14 +232,17 @@ namespace WheelRail
     BatchEnergies      batch_energies;
     if (n_batches > 0)
       gather_batch<with_damping>(0, 0, U, V, slots);
+    const auto block = [&](const unsigned int batch) {
+      return batch_blocks + std::size_t(block_of ? block_of[batch] : batch) * block_size;
+    };
     for (unsigned int batch = 0; batch < n_batches; ++batch)
       {
-        const Data         data{batch_blocks + std::size_t(batch) * block_size};
+        const Data         data{block(batch)};
         const unsigned int slot = batch & 1;
         // the damping time constants, the block's last W values, only
         // where the kernel damps
         if (batch + prefetch_distance < n_batches)
-          prefetch_block(batch_blocks + std::size_t(batch + prefetch_distance) * block_size,
+          prefetch_block(block(batch + prefetch_distance),
                          with_damping ? block_size : block_size - W);
         const unsigned int family = batch_family[batch];
         if (batch + node_prefetch_distance < n_batches)
@@ -241,8 +250,14 @@ namespace WheelRail
         if (batch + 1 < n_batches)
           gather_batch<with_damping>(batch + 1, slot ^ 1, U, V, slots);
         const bool in_family = family != numbers::invalid_unsigned_int;
-        power += batch_kernel<Data, with_damping, with_energies>(
-          data, in_family, slot, slots, fb, batch_energies, &batch_kappa_ref[std::size_t(batch) * W]);
+        power +=
+          batch_kernel<Data, with_damping, with_energies>(data,
+                                                          in_family,
+                                                          slot,
+                                                          slots,
+                                                          fb,
+                                                          batch_energies,
+                                                          &batch_kappa_ref[std::size_t(batch) * W]);
         if (in_family)
           scatter_family(F,
                          &family_nodes[std::size_t(family) * 27],

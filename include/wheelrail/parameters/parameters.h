@@ -53,6 +53,16 @@ namespace WheelRail
   inline constexpr SelectionNames<DampingForm, 2> damping_form_names{
     {{"strain rate", "nodal field"}}};
 
+  /** Time integration/Element geometry sharing: which batches share one
+   *  copy of the single-precision element data. */
+  enum class GeometrySharing
+  {
+    identical,      ///< blocks that are the same bit for bit
+    within_rounding ///< blocks the same after rounding to the floats' precision
+  };
+  inline constexpr SelectionNames<GeometrySharing, 2> geometry_sharing_names{
+    {{"identical", "within rounding"}}};
+
   /** Problem/Mode: the explicit run or one of the static runs. */
   enum class RunMode
   {
@@ -238,17 +248,18 @@ namespace WheelRail
   /** Element, damping and central-difference integration (SPEC 2). */
   struct SolverParameters
   {
-    double       end_time;
-    double       time_step;       ///< 0 = automatic
-    bool         allow_long_runs; ///< confirms > 1e8 steps or a step < 1e-3 of the stable one
-    double       courant_factor;
-    double       hourglass_coefficient;
-    DampingModel damping_model;
-    DampingForm  damping_form;
-    double       stiffness_damping_coefficient;
-    double       rayleigh_beta;
-    Tensor<1, 3> gravity;
-    bool         single_precision_geometry; ///< Element geometry precision = single
+    double          end_time;
+    double          time_step;       ///< 0 = automatic
+    bool            allow_long_runs; ///< confirms > 1e8 steps or a step < 1e-3 of the stable one
+    double          courant_factor;
+    double          hourglass_coefficient;
+    DampingModel    damping_model;
+    DampingForm     damping_form;
+    double          stiffness_damping_coefficient;
+    double          rayleigh_beta;
+    Tensor<1, 3>    gravity;
+    bool            single_precision_geometry; ///< Element geometry precision = single
+    GeometrySharing geometry_sharing;          ///< Element geometry sharing
 
     static void
     declare_parameters(ParameterHandler &prm);

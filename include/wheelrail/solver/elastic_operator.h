@@ -207,6 +207,14 @@ namespace WheelRail
     {
       return 8 * (family_nodes.size() / 27);
     }
+    /** Distinct blocks of single-precision element data that the force
+     *  loop streams, and the batches that read them (0 and n_batches of
+     *  this rank; 0 with double geometry). */
+    std::pair<unsigned int, unsigned int>
+    n_single_blocks_and_batches() const
+    {
+      return {n_single_blocks, batch_single_block.empty() ? 0u : n_batches};
+    }
     /** Reference position of the support point of local DoF index i. */
     const std::vector<Point<dim>> &
     support_points() const
@@ -283,24 +291,28 @@ namespace WheelRail
     void
     reduce_mesh_quality(const MeshQuality &local, const double min_dt);
     /** ... and the force loop's copy with single-precision geometric
-     *  factors (Time integration/Single precision geometry). */
+     *  factors, one per distinct block (Time integration/Element geometry
+     *  precision and sharing; single_element_data.cc). */
     void
     copy_single_precision();
-    /** The element force loop over the batches of @p batch_blocks
-     *  (@p block_size doubles each), read through @p Data (DoubleData or
-     *  SingleData of element_kernel.h); @p with_damping: the stiffness
+    /** The element force loop over the batches, whose element data are
+     *  the blocks of @p batch_blocks (@p block_size doubles each) in batch
+     *  order, or block @p block_of[batch] where @p block_of is given, read
+     *  through @p Data (DoubleData or SingleData of element_data.h);
+     *  @p with_damping: the stiffness
      *  damping stress from the velocities @p V; @p with_energies: the
      *  strain energies into @p energies as well. One instantiation per
      *  combination, so that the hot loop holds one kernel and no branch on
      *  them. */
     template <typename Data, bool with_damping, bool with_energies>
     double
-    element_loop(const double      *batch_blocks,
-                 const unsigned int block_size,
-                 const double      *U,
-                 const double      *V,
-                 double            *F,
-                 StrainEnergies    *energies) const;
+    element_loop(const double       *batch_blocks,
+                 const unsigned int *block_of,
+                 const unsigned int  block_size,
+                 const double       *U,
+                 const double       *V,
+                 double             *F,
+                 StrainEnergies     *energies) const;
     /** The parts of element_loop(), force-inlined into it but for the
      *  gather: the buffers of the nodal values gathered one batch
      *  ahead ... */
@@ -373,7 +385,10 @@ namespace WheelRail
     /** With Time integration/Element geometry precision = single the force
      *  loop reads this copy (layout ElementKernel::SingleField), everything
      *  else batch_data; empty otherwise. */
-    AlignedVector<double>     batch_single;
+    AlignedVector<double> batch_single;
+    /** The block of batch_single of each batch, and the number of blocks. */
+    std::vector<unsigned int> batch_single_block;
+    unsigned int              n_single_blocks = 0;
     std::vector<unsigned int> batch_nodes;      ///< [batch][vertex][lane]
     std::vector<unsigned int> batch_cell_index; ///< active cell index
     /** Batches whose 8 cells are the 8 children of one parent, in child
