@@ -42,8 +42,9 @@ namespace WheelRail
     }
 
     /**
-     * A batch's block rounded so that blocks closer than the floats'
-     * rounding become the same, lane by lane: the gradient factors b to
+     * A batch's block (its float factors @p g, its doubles in @p block)
+     * rounded so that blocks closer than the floats' rounding become the
+     * same, lane by lane: the gradient factors b to
      * multiples of 2^-23 times the binade of the lane's largest |b| (half
      * a float unit of that factor at most), the hourglass factors c to
      * multiples of 2^-23 over that binade (c has the unit of a length, 1/b
@@ -52,10 +53,9 @@ namespace WheelRail
      * values only: the same on every rank and in every batch order.
      */
     void
-    round_to_grid(double *block)
+    round_to_grid(float (&g)[SingleField::n_geometry * W], double *block)
     {
       constexpr double unit = 0x1p-23;
-      float           *g    = reinterpret_cast<float *>(block);
       for (unsigned int l = 0; l < W; ++l)
         {
           double b_max = 0;
@@ -97,7 +97,6 @@ namespace WheelRail
         float         geometry[SingleField::n_geometry * W];
         for (unsigned int k = 0; k < SingleField::n_geometry * W; ++k)
           geometry[k] = static_cast<float>(data[k]);
-        std::memcpy(block, geometry, sizeof(geometry));
         for (unsigned int l = 0; l < W; ++l)
           {
             block[SingleField::volume + l] = data[Field::volume * W + l];
@@ -105,7 +104,8 @@ namespace WheelRail
             block[SingleField::beta + l]   = data[Field::beta * W + l];
           }
         if (prm.solver.geometry_sharing == GeometrySharing::within_rounding)
-          round_to_grid(block);
+          round_to_grid(geometry, block);
+        std::memcpy(block, geometry, sizeof(geometry));
         const auto [it, inserted] =
           index_of.emplace(std::string(reinterpret_cast<const char *>(block), bytes),
                            index_of.size());
