@@ -146,17 +146,25 @@ run_bench() {
     [ "$case" = block ] && dir=results/bench_block
     for np in "${counts[@]}"; do
       echo "run.sh: benchmark prm/bench_$case.prm on $np rank(s)"
+      local log
+      log=$(mktemp)
       if [ "$np" -gt 1 ]; then
-        mpirun -np "$np" "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step'
+        mpirun -np "$np" "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step' | tee "$log"
       else
-        "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step'
+        "$top/build/wheelrail" "prm/bench_$case.prm" | grep -v '^step' | tee "$log"
       fi
+      # the share of the batches' single-precision blocks that are distinct
+      # (Element geometry sharing): the element data the loop streams
+      local shared
+      shared=$(sed -n 's/.*element data: \([0-9]*\) distinct blocks for \([0-9]*\) batches.*/\1 \2/p' "$log" |
+        awk '{ printf "%.4f", $1 / $2 }')
+      rm -f "$log"
       local row ns bytes loop
       row=$(grep -v '^#' "$dir/timing.csv" | tail -1)
       ns=$(echo "$row" | cut -d, -f6)
       bytes=$(awk -v ns="$ns" -v bw="$triad" 'BEGIN { printf "%.0f", ns * bw }')
       echo "run.sh: $ns ns per element-step x $triad GB/s (2-core triad) = $bytes bytes per element-step"
-      loop=$(element_loop_rates "$dir/parameters.prm" "$np" "$row")
+      loop=$(element_loop_rates "$dir/parameters.prm" "$np" "$row" "${shared:-1}")
       echo "run.sh: element loop of prm/bench_$case.prm on $np rank(s): $(echo "$loop" | cut -d, -f5-)"
       echo "$(date -u +%Y-%m-%dT%H:%M:%SZ),$commit,$cpu,$row,$triad,$bytes,$case,$(echo "$loop" | cut -d, -f1-4)" >> "$csv"
       rows=$((rows + 1))
@@ -179,14 +187,16 @@ run_bench() {
 # and steps over the slowest rank's element time, against the FMA peak of
 # that many cores (1: the one-core figure; more: the 2-core figure per 2
 # cores), and the bytes the loop must move per cell (its element data, 312 B
-# double or 168 B single, and per DoF u, v and the force read and written,
+# double or 168 B single times the share of distinct blocks @p shared (the
+# 4th argument; 1 unless Element geometry sharing finds copies: the shared
+# blocks come from the caches), and per DoF u, v and the force read and written,
 # 8 B each; undamped: no v; Damping form = nodal field: the undamped kernel
 # on w, 24 B, plus the pass that forms w = u + beta v, 32 B) against the
 # triad of as many cores. Prints
 # "GFLOP/s,% of FMA peak,GB/s,% of triad,sentence". Uses flops, fma1,
 # fma2, triad1, triad of run_bench().
 element_loop_rates() {
-  local prm=$1 np=$2 row=$3 damped=1 single=0 nodal=0
+  local prm=$1 np=$2 row=$3 shared=$4 damped=1 single=0 nodal=0
   grep -Eq '^ *set Damping model *= *none( |$)' "$prm" && damped=0
   grep -Eq '^ *set Element geometry precision *= *single( |$)' "$prm" && single=1
   # the nodal form runs the undamped kernel (on w = u + beta v)
@@ -194,12 +204,12 @@ element_loop_rates() {
     nodal=1
   fi
   local f=${flops[$((2 * single + 1 - damped + nodal))]}
-  echo "$row" | awk -F, -v f="$f" -v np="$np" -v damped="$damped" -v single="$single" -v nodal="$nodal" \
+  echo "$row" | awk -F, -v f="$f" -v np="$np" -v damped="$damped" -v single="$single" -v nodal="$nodal" -v shared="$shared" \
     -v fma1="$fma1" -v fma2="$fma2" -v tr1="$triad1" -v tr2="$triad" '{
       cells = $2; dofs = $3; steps = $4; el = $7
       peak = (np == 1) ? fma1 : fma2 * np / 2; bw = (np == 1) ? tr1 : tr2 * np / 2
       gflops = f * cells * steps / el / 1e9
-      bytes = (single ? 168 : 312) + (nodal ? 56 : damped ? 32 : 24) * dofs / cells
+      bytes = (single ? 168 * shared : 312) + (nodal ? 56 : damped ? 32 : 24) * dofs / cells
       gbs = bytes * cells * steps / el / 1e9
       printf "%.1f,%.1f,%.1f,%.1f,", gflops, 100 * gflops / peak, gbs, 100 * gbs / bw
       printf "%d operations per cell (counted), %.1f GFLOP/s = %.0f %% of the FMA peak of %d core(s); %.0f bytes per cell, %.1f GB/s = %.0f %% of the triad\n",
