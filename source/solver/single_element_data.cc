@@ -80,15 +80,13 @@ namespace WheelRail
   {
     batch_single.clear();
     batch_single_block.clear();
-    n_single_blocks = 0;
     if (!prm.solver.single_precision_geometry)
       return;
-    // each batch's block made in turn and kept only if it is new (the
+    // each batch's block made in turn and appended only if it is new (the
     // distinct blocks in the order of their first batch), so that set-up
-    // holds no second copy of all blocks
+    // holds no copy of all blocks
     constexpr std::size_t                         bytes = SingleField::n_double * sizeof(double);
     std::unordered_map<std::string, unsigned int> index_of;
-    std::vector<double>                           distinct;
     alignas(64) double                            block[SingleField::n_double];
     batch_single_block.resize(n_batches);
     for (unsigned int batch = 0; batch < n_batches; ++batch)
@@ -110,11 +108,17 @@ namespace WheelRail
           index_of.emplace(std::string(reinterpret_cast<const char *>(block), bytes),
                            index_of.size());
         if (inserted)
-          distinct.insert(distinct.end(), block, block + SingleField::n_double);
+          batch_single.insert_back(block, block + SingleField::n_double);
         batch_single_block[batch] = it->second;
       }
-    n_single_blocks = index_of.size();
-    batch_single.resize_fast(distinct.size());
-    std::copy(distinct.begin(), distinct.end(), batch_single.begin());
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  ElasticOperator::n_single_blocks_and_batches() const
+  {
+    return {static_cast<unsigned int>(batch_single.size() / SingleField::n_double),
+            batch_single_block.empty() ? 0u : n_batches};
   }
 } // namespace WheelRail

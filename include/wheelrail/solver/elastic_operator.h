@@ -211,10 +211,7 @@ namespace WheelRail
      *  loop streams, and the batches that read them (0 and n_batches of
      *  this rank; 0 with double geometry). */
     std::pair<unsigned int, unsigned int>
-    n_single_blocks_and_batches() const
-    {
-      return {n_single_blocks, batch_single_block.empty() ? 0u : n_batches};
-    }
+    n_single_blocks_and_batches() const;
     /** Reference position of the support point of local DoF index i. */
     const std::vector<Point<dim>> &
     support_points() const
@@ -386,9 +383,8 @@ namespace WheelRail
      *  loop reads this copy (layout ElementKernel::SingleField), everything
      *  else batch_data; empty otherwise. */
     AlignedVector<double> batch_single;
-    /** The block of batch_single of each batch, and the number of blocks. */
+    /** The block of batch_single of each batch. */
     std::vector<unsigned int> batch_single_block;
-    unsigned int              n_single_blocks = 0;
     std::vector<unsigned int> batch_nodes;      ///< [batch][vertex][lane]
     std::vector<unsigned int> batch_cell_index; ///< active cell index
     /** Batches whose 8 cells are the 8 children of one parent, in child
